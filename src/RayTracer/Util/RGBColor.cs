@@ -1,0 +1,47 @@
+namespace RayTracer.Util;
+
+/// <summary>Linear RGB radiance or reflectance.</summary>
+public struct RGBColor : IEquatable<RGBColor>
+{
+    public double r;
+    public double g;
+    public double b;
+
+    public static readonly RGBColor Black = new(0, 0, 0);
+    public static readonly RGBColor White = new(1, 1, 1);
+
+    public RGBColor(double r, double g, double b)
+    {
+        this.r = r;
+        this.g = g;
+        this.b = b;
+    }
+
+    public RGBColor(double c) : this(c, c, c)
+    {
+    }
+
+    public static RGBColor operator +(RGBColor a, RGBColor c) => new(a.r + c.r, a.g + c.g, a.b + c.b);
+    public static RGBColor operator -(RGBColor a, RGBColor c) => new(a.r - c.r, a.g - c.g, a.b - c.b);
+    public static RGBColor operator *(RGBColor a, RGBColor c) => new(a.r * c.r, a.g * c.g, a.b * c.b);
+    public static RGBColor operator *(RGBColor a, double s) => new(a.r * s, a.g * s, a.b * s);
+    public static RGBColor operator *(double s, RGBColor a) => new(a.r * s, a.g * s, a.b * s);
+    public static RGBColor operator /(RGBColor a, double s)
+    {
+        double inv = 1.0 / s;
+        return new(a.r * inv, a.g * inv, a.b * inv);
+    }
+
+    /// <summary>Raises each component to <paramref name="p"/> (gamma correction).</summary>
+    public readonly RGBColor Pow(double p) => new(Math.Pow(r, p), Math.Pow(g, p), Math.Pow(b, p));
+
+    public readonly double Average => (r + g + b) / 3.0;
+    public readonly double MaxComponent => Math.Max(r, Math.Max(g, b));
+
+    public readonly bool Equals(RGBColor other) => r == other.r && g == other.g && b == other.b;
+    public override readonly bool Equals(object? obj) => obj is RGBColor c && Equals(c);
+    public override readonly int GetHashCode() => HashCode.Combine(r, g, b);
+    public static bool operator ==(RGBColor a, RGBColor c) => a.Equals(c);
+    public static bool operator !=(RGBColor a, RGBColor c) => !a.Equals(c);
+    public override readonly string ToString() => FormattableString.Invariant($"rgb({r}, {g}, {b})");
+}

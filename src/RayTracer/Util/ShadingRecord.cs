@@ -1,0 +1,59 @@
+using RayTracer.Materials;
+using RayTracer.Scenes;
+
+namespace RayTracer.Util;
+
+/// <summary>
+/// Everything shading needs to know about the nearest hit along a ray. A class (not a struct)
+/// because it is filled in by objects, passed through materials and lights, and mutated along the way.
+/// </summary>
+public sealed class ShadingRecord
+{
+    public ShadingRecord(World? world)
+    {
+        World = world;
+    }
+
+    public bool HitAnObject { get; set; }
+
+    public Material? Material { get; set; }
+
+    /// <summary>World-space hit point.</summary>
+    public Point3D HitPoint { get; set; }
+
+    /// <summary>Hit point in the object's own frame (before instance transforms), for 3D textures.</summary>
+    public Point3D LocalHitPoint { get; set; }
+
+    /// <summary>Unit normal at the hit point, on the outside of the surface.</summary>
+    public Normal3D Normal { get; set; }
+
+    public Ray Ray { get; set; }
+
+    /// <summary>Recursion depth of the ray that produced this record.</summary>
+    public int Depth { get; set; }
+
+    /// <summary>Ray parameter of the hit.</summary>
+    public double T { get; set; }
+
+    /// <summary>Direction towards a sampled light point (area lights).</summary>
+    public Vector3D Direction { get; set; }
+
+    public TextureCoordinates TextureCoordinates { get; set; }
+
+    public World? World { get; set; }
+
+    /// <summary>Clears the per-hit state so a record can be reused for another ray.</summary>
+    public void Reset()
+    {
+        HitAnObject = false;
+        Material = null;
+        HitPoint = default;
+        LocalHitPoint = default;
+        Normal = default;
+        Ray = default;
+        Depth = 0;
+        T = 0;
+        Direction = default;
+        TextureCoordinates = default;
+    }
+}
