@@ -1,0 +1,67 @@
+using GMac.Core.Numerics;
+using GMac.Core.Symbolic;
+
+namespace GMac.Core.Tests.Symbolic;
+
+public class ScalarParser_RoundTrip
+{
+    [Theory]
+    [InlineData("2*x*y - sin(a)^2")]
+    [InlineData("1/2*x")]
+    [InlineData("x/(a + b)")]
+    [InlineData("(a + b)^(-3) + 1/x^2")]
+    [InlineData("-x^3 + 2.5e-1*u.e1 - 7")]
+    [InlineData("atan2(y, x) + pow(x, y) + abs(x - y) + exp(-x) + log(x + 1) + tan(2*x) + sqrt(x)")]
+    [InlineData("cos(pi*t)/sqrt(x^2 + y^2) - 3/4*pi")]
+    [InlineData("pow(-x, 1/3) * (x + y)^(-2) / sin(x)")]
+    public void Printed_text_parses_back_to_the_same_object(string text)
+    {
+        var parsed = Scalar.Parse(text);
+        var printed = parsed.ToString();
+        Assert.Same(parsed, Scalar.Parse(printed));
+        Assert.Equal(printed, Scalar.Parse(printed).ToString());
+    }
+
+    [Fact]
+    public void Numbers_are_exact()
+    {
+        Assert.Same(Scalar.Constant(new Rational(5, 4)), Scalar.Parse("1.25"));
+        Assert.Same(Scalar.Constant(new Rational(1, 500)), Scalar.Parse("2e-3"));
+        Assert.Same(Scalar.Constant(new Rational(1, 3)), Scalar.Parse("1/3"));
+        Assert.Same(Scalar.Constant(-8), Scalar.Parse("-2^3"));
+        Assert.Same(Scalar.Constant(new Rational(1, 8)), Scalar.Parse("2^-3"));
+        Assert.Same(Scalar.Constant(512), Scalar.Parse("2^3^2"));
+    }
+
+    [Fact]
+    public void Printed_form_is_conventional()
+    {
+        var x = Scalar.Variable("x");
+        var y = Scalar.Variable("y");
+        var a = Scalar.Variable("a");
+        Assert.Equal("2*x*y - sin(a)^2", (Scalar.Scale(x * y, 2) - Scalar.Sin(a) * Scalar.Sin(a)).ToString());
+        Assert.Equal("1/2*x", (x / 2).ToString());
+        Assert.Equal("-x/y", (-x / y).ToString());
+        Assert.Equal("1/(x + y)", (Scalar.One / (x + y)).ToString());
+        Assert.Equal("0", Scalar.Zero.ToString());
+    }
+
+    [Theory]
+    [InlineData("x + * y", 5)]
+    [InlineData("sin(x", 6)]
+    [InlineData("foo(x)", 1)]
+    [InlineData("2x", 2)]
+    [InlineData("x $ y", 3)]
+    [InlineData("atan2(x)", 1)]
+    [InlineData("", 1)]
+    [InlineData("(x + y))", 8)]
+    [InlineData("x / 0", 5)]
+    [InlineData("1e+", 2)]
+    public void Syntax_errors_carry_the_column(string text, int column)
+    {
+        var error = Assert.Throws<ScalarSyntaxException>(() => Scalar.Parse(text));
+        Assert.Equal(column, error.Column);
+        Assert.StartsWith($"column {column}: ", error.Message);
+        Assert.False(Scalar.TryParse(text, out _));
+    }
+}
