@@ -1,0 +1,17 @@
+namespace GMac.Core.Algebra;
+
+/// <summary>
+/// A geometric-algebra operation was asked something it cannot answer (a null versor to invert,
+/// operands from different frames, a malformed metric). The message names the frame and the value,
+/// so the DSL can turn it into a diagnostic.
+/// </summary>
+public sealed class AlgebraException : Exception
+{
+    public string? FrameName { get; }
+
+    public AlgebraException(string? frameName, string message)
+        : base(frameName is null ? message : $"Frame '{frameName}': {message}")
+    {
+        FrameName = frameName;
+    }
+}

@@ -1,0 +1,81 @@
+using System.Numerics;
+using System.Runtime.CompilerServices;
+using System.Collections.Concurrent;
+using GMac.Core.Numerics;
+
+namespace GMac.Core.Algebra;
+
+/// <summary>
+/// The exact blade products of one frame and one product kind, with coefficients converted once
+/// to the scalar type T, so a multivector product is only table look-ups, multiplies and adds.
+/// </summary>
+internal sealed class ProductTable<T> where T : INumberBase<T>
+{
+    private const int DenseLimit = 256; // blade counts up to 8 dimensions get a flat array of entries
+
+    private static readonly ConditionalWeakTable<Frame, ProductTable<T>[]> Tables = new();
+
+    private readonly Frame _frame;
+    private readonly ProductKind _kind;
+    private readonly Entry?[]? _dense;
+    private readonly ConcurrentDictionary<long, Entry>? _sparse;
+
+    internal sealed class Entry(int[] blades, T[] coefficients, bool[] isOne)
+    {
+        public readonly int[] Blades = blades;
+        public readonly T[] Coefficients = coefficients;
+        public readonly bool[] IsOne = isOne;
+    }
+
+    private ProductTable(Frame frame, ProductKind kind)
+    {
+        _frame = frame;
+        _kind = kind;
+        if (frame.BladeCount <= DenseLimit) _dense = new Entry?[frame.BladeCount * frame.BladeCount];
+        else _sparse = new ConcurrentDictionary<long, Entry>();
+    }
+
+    public static ProductTable<T> For(Frame frame, ProductKind kind)
+    {
+        var tables = Tables.GetValue(frame, f =>
+        {
+            var kinds = Enum.GetValues<ProductKind>();
+            var array = new ProductTable<T>[kinds.Length];
+            foreach (var k in kinds) array[(int)k] = new ProductTable<T>(f, k);
+            return array;
+        });
+        return tables[(int)kind];
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public Entry Get(int a, int b)
+    {
+        if (_dense is not null)
+        {
+            var index = a * _frame.BladeCount + b;
+            return _dense[index] ??= Build(a, b); // a benign race: both builders produce equal entries
+        }
+        return _sparse!.GetOrAdd(((long)a << 32) | (uint)b, key => Build((int)(key >> 32), (int)key));
+    }
+
+    private Entry Build(int a, int b)
+    {
+        var terms = _frame.Products.Product(_kind, a, b);
+        var blades = new int[terms.Length];
+        var coefficients = new T[terms.Length];
+        var isOne = new bool[terms.Length];
+        for (var i = 0; i < terms.Length; i++)
+        {
+            blades[i] = terms[i].Blade;
+            coefficients[i] = Convert(terms[i].Coefficient);
+            isOne[i] = terms[i].Coefficient.IsOne;
+        }
+        return new Entry(blades, coefficients, isOne);
+    }
+
+    public static T Convert(Rational r)
+    {
+        var n = r.IsInteger ? T.CreateChecked(r.Numerator) : T.CreateChecked(r.Numerator) / T.CreateChecked(r.Denominator);
+        return n;
+    }
+}

@@ -1,0 +1,81 @@
+using GMac.Core.Algebra;
+using GMac.Core.Numerics;
+
+namespace GMac.Core.Tests.Algebra;
+
+public class Algebra_BadInput
+{
+    [Fact]
+    public void NonSymmetricMatrix_NamesFrameAndEntries()
+    {
+        var ex = Assert.Throws<AlgebraException>(() => Metric.FromMatrix(new Rational[,] { { 1, 2 }, { 3, 1 } }, "bent"));
+        Assert.Contains("'bent'", ex.Message);
+        Assert.Contains("(1,2) is 2", ex.Message);
+        Assert.Contains("(2,1) is 3", ex.Message);
+    }
+
+    [Fact]
+    public void NonSquareMatrix_IsRejected()
+    {
+        var ex = Assert.Throws<AlgebraException>(() => Metric.FromMatrix(new Rational[,] { { 1, 0, 0 }, { 0, 1, 0 } }, "flat"));
+        Assert.Contains("2x3", ex.Message);
+    }
+
+    [Fact]
+    public void TooManyBasisVectors_AreRejected()
+    {
+        var ex = Assert.Throws<AlgebraException>(() => Frame.Euclidean("huge", Frame.MaxDimension + 1));
+        Assert.Contains("'huge'", ex.Message);
+        Assert.Contains($"{Frame.MaxDimension + 1} basis vectors", ex.Message);
+    }
+
+    [Fact]
+    public void WrongNumberOfNames_AndDuplicateNames_AreRejected()
+    {
+        Assert.Contains("3 basis vector names", Assert.Throws<AlgebraException>(() => new Frame("f", ["a", "b", "c"], Metric.Euclidean(2))).Message);
+        Assert.Contains("'a' is used twice", Assert.Throws<AlgebraException>(() => new Frame("f", ["a", "a"], Metric.Euclidean(2))).Message);
+    }
+
+    [Fact]
+    public void InverseOfNullVersor_Throws()
+    {
+        var cga = TestFrames.Conformal;
+        var ni = Multivector<double>.Basis(cga, "ni");
+        var ex = Assert.Throws<AlgebraException>(() => ni.Inverse());
+        Assert.Contains("'cga5d'", ex.Message);
+        Assert.Contains("null", ex.Message);
+    }
+
+    [Fact]
+    public void MixingFrames_Throws()
+    {
+        var a = Multivector<double>.Basis(TestFrames.E3, "e1");
+        var b = Multivector<double>.Basis(TestFrames.E2, "e1");
+        var ex = Assert.Throws<AlgebraException>(() => a.Gp(b));
+        Assert.Contains("'e3d'", ex.Message);
+        Assert.Contains("'e2d'", ex.Message);
+        Assert.Throws<AlgebraException>(() => a + b);
+    }
+
+    [Fact]
+    public void DualInDegenerateFrame_Throws()
+    {
+        var e1 = Multivector<double>.Basis(TestFrames.Projective, "e1");
+        Assert.Contains("'pga'", Assert.Throws<AlgebraException>(() => e1.Dual()).Message);
+    }
+
+    [Fact]
+    public void SingularBasisChange_Throws()
+    {
+        var bcm = new RationalMatrix(new Rational[,] { { 1, 1 }, { 2, 2 } });
+        var ex = Assert.Throws<AlgebraException>(() => FrameRelation.Derive(TestFrames.E2, "flat2", ["a", "b"], bcm));
+        Assert.Contains("singular", ex.Message);
+    }
+
+    [Fact]
+    public void UnknownBlade_NamesTheFrameBasis()
+    {
+        var ex = Assert.Throws<AlgebraException>(() => Multivector<double>.Basis(TestFrames.E3, "e1^x"));
+        Assert.Contains("e1, e2, e3", ex.Message);
+    }
+}
