@@ -17,15 +17,34 @@ public abstract class GeometricObject
     /// </summary>
     public Func<Point2D>? UnitSquareSamples { get; set; }
 
+    [ThreadStatic]
+    private static ShadingRecord? _scratch;
+
     /// <summary>
-    /// Nearest hit with t greater than <see cref="MathConstants.Epsilon"/>. On a hit, fills the
-    /// geometric part of <paramref name="sr"/> (normal, local hit point, texture coordinates);
-    /// the caller fills the world hit point and material.
+    /// Nearest hit with t greater than <see cref="MathConstants.Epsilon"/>. On a hit the object fills
+    /// <paramref name="sr"/>'s Normal (unit), LocalHitPoint, TextureCoordinates and Material (the
+    /// material of the part actually hit, which for compounds and meshes is not this object's own);
+    /// the caller sets HitAnObject, HitPoint, T and Ray. On a miss <paramref name="sr"/> is untouched.
     /// </summary>
     public abstract bool Hit(in Ray ray, out double tmin, ShadingRecord sr);
 
-    /// <summary>Any hit with t greater than epsilon, for shadow rays; no shading data is produced.</summary>
-    public abstract bool ShadowHit(in Ray ray, out double tmin);
+    /// <summary>
+    /// Nearest hit distance only. Acceleration structures call this while traversing and call
+    /// <see cref="Hit"/> once for the winner. Primitives override it with a cheaper test.
+    /// </summary>
+    public virtual bool Intersect(in Ray ray, out double t) => Hit(ray, out t, _scratch ??= new ShadingRecord(null));
+
+    /// <summary>Hit with t greater than epsilon for shadow rays; false when the object casts no shadows.</summary>
+    public virtual bool ShadowHit(in Ray ray, out double tmin)
+    {
+        if (!CastsShadows)
+        {
+            tmin = 0;
+            return false;
+        }
+
+        return Intersect(ray, out tmin);
+    }
 
     /// <summary>World-space bounds; unbounded objects return <see cref="BoundingBox.Infinite"/>.</summary>
     public abstract BoundingBox GetBoundingBox();

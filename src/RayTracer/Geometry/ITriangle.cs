@@ -1,0 +1,16 @@
+using RayTracer.Util;
+
+namespace RayTracer.Geometry;
+
+/// <summary>
+/// A primitive whose hit distance is exactly the flat triangle (V0, V1, V2). Acceleration structures
+/// copy these vertices into packed arrays and intersect them without a virtual call.
+/// </summary>
+public interface ITriangle
+{
+    Point3D V0 { get; }
+
+    Point3D V1 { get; }
+
+    Point3D V2 { get; }
+}
