@@ -1,9 +1,84 @@
 using RayTracer.Scenes;
+using RayTracer.Tracing;
+using RayTracer.Util;
 
 namespace RayTracer.Viewing;
 
-/// <summary>Generates primary rays and renders a world.</summary>
+/// <summary>
+/// A camera with an orthonormal frame (u, v, w) built from eye, look-at point and up vector; w points
+/// from the look-at point back to the eye. Subclasses map view-plane points to primary rays.
+/// </summary>
 public abstract class Camera
 {
-    public abstract void RenderScene(World world);
+    public Point3D Eye { get; set; } = new(0, 0, 500);
+    public Point3D LookAt { get; set; } = Point3D.Origin;
+    public Vector3D Up { get; set; } = Vector3D.UnitY;
+
+    /// <summary>Scales radiance (a stand-in for exposure time).</summary>
+    public double Exposure { get; set; } = 1.0;
+
+    public Vector3D U { get; private set; } = Vector3D.UnitX;
+    public Vector3D V { get; private set; } = Vector3D.UnitY;
+    public Vector3D W { get; private set; } = Vector3D.UnitZ;
+
+    /// <summary>Builds (u, v, w); handles looking straight up or down, where up × w vanishes.</summary>
+    public void ComputeUVW()
+    {
+        var w = (Eye - LookAt);
+        if (w.LengthSquared == 0)
+            throw new InvalidOperationException("Camera eye and look-at point coincide.");
+        w.Normalize();
+        var u = Up.Cross(w);
+        if (u.LengthSquared < 1e-20)
+        {
+            // Up is parallel to the viewing direction: pick a fixed frame around the vertical.
+            var sign = w.y > 0 ? 1.0 : -1.0;
+            U = new Vector3D(0, 0, sign);
+            V = new Vector3D(1, 0, 0);
+            W = new Vector3D(0, sign, 0);
+            return;
+        }
+        u.Normalize();
+        U = u;
+        V = w.Cross(u);
+        W = w;
+    }
+
+    /// <summary>Width of the rendered image in pixels (stereo pairs are wider than the view plane).</summary>
+    public virtual int ImageWidth(ViewPlane vp) => vp.HorizontalResolution;
+
+    public virtual int ImageHeight(ViewPlane vp) => vp.VerticalResolution;
+
+    /// <summary>
+    /// Primary ray through view-plane point <paramref name="pp"/> (origin at the centre of the view plane,
+    /// y up). Returns false where the camera sees nothing (outside a fisheye circle).
+    /// </summary>
+    public abstract bool GetRay(Point2D pp, ViewPlane vp, out Ray ray);
+
+    /// <summary>Average radiance over the pixel at (<paramref name="column"/>, <paramref name="row"/>), row 0 at the top.</summary>
+    public virtual RGBColor RenderPixel(World world, int column, int row)
+    {
+        var vp = world.ViewPlane;
+        var tracer = world.Tracer ?? throw new InvalidOperationException("The world has no tracer.");
+        var r = vp.VerticalResolution - 1 - row;
+        var s = vp.PixelSize;
+        var sum = RGBColor.Black;
+        var n = vp.NumSamples;
+        for (var j = 0; j < n; j++)
+        {
+            var sp = vp.Sampler.SampleUnitSquare();
+            var pp = new Point2D(
+                s * (column - 0.5 * vp.HorizontalResolution + sp.x),
+                s * (r - 0.5 * vp.VerticalResolution + sp.y));
+            if (GetRay(pp, vp, out var ray))
+            {
+                RayStatistics.CountPrimary();
+                sum += tracer.TraceRay(ray, 0);
+            }
+        }
+        return sum * (Exposure / n);
+    }
+
+    /// <summary>Renders the whole image on all cores with seed 0.</summary>
+    public FrameBuffer RenderScene(World world) => new Renderer().Render(world);
 }

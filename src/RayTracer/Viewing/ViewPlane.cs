@@ -1,11 +1,47 @@
+using RayTracer.Sampling;
+
 namespace RayTracer.Viewing;
 
-/// <summary>Image resolution and pixel geometry.</summary>
-public abstract class ViewPlane
+/// <summary>Image resolution, pixel geometry, anti-aliasing sampler, tone mapping and recursion limit.</summary>
+public sealed class ViewPlane
 {
-    public abstract int HorizontalResolution { get; }
+    private int _horizontalResolution = 400;
+    private int _verticalResolution = 300;
+    private double _gamma = 1.0;
 
-    public abstract int VerticalResolution { get; }
+    public int HorizontalResolution
+    {
+        get => _horizontalResolution;
+        set => _horizontalResolution = value > 0 ? value : throw new ArgumentOutOfRangeException(nameof(value), "Width must be positive.");
+    }
 
-    public abstract double PixelSize { get; }
+    public int VerticalResolution
+    {
+        get => _verticalResolution;
+        set => _verticalResolution = value > 0 ? value : throw new ArgumentOutOfRangeException(nameof(value), "Height must be positive.");
+    }
+
+    /// <summary>Side of a pixel in view-plane units.</summary>
+    public double PixelSize { get; set; } = 1.0;
+
+    /// <summary>Display gamma; the output is radiance^(1/gamma).</summary>
+    public double Gamma
+    {
+        get => _gamma;
+        set => _gamma = value > 0 ? value : throw new ArgumentOutOfRangeException(nameof(value), "Gamma must be positive.");
+    }
+
+    public GamutMapping GamutMapping { get; set; } = GamutMapping.Clamp;
+
+    /// <summary>Deepest recursion level a tracer follows (0 = primary rays only).</summary>
+    public int MaxDepth { get; set; } = 5;
+
+    /// <summary>Pixel sampler; one centred sample when null.</summary>
+    public Sampler Sampler { get; set; } = new RegularSampler(1);
+
+    public int NumSamples => Sampler.NumSamples;
+
+    /// <summary>Multi-jittered sampling with <paramref name="samples"/> per pixel (a single sample is the pixel centre).</summary>
+    public void SetSamples(int samples) =>
+        Sampler = samples <= 1 ? new RegularSampler(1) : new MultiJitteredSampler(samples);
 }

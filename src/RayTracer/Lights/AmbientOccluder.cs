@@ -1,0 +1,54 @@
+using RayTracer.Sampling;
+using RayTracer.Util;
+
+namespace RayTracer.Lights;
+
+/// <summary>
+/// Ambient light that is dimmed where the hemisphere above a point is blocked: one cosine-distributed
+/// shadow ray per call; occluded points receive <see cref="MinAmount"/> of the light instead of all of it.
+/// </summary>
+public sealed class AmbientOccluder : Light
+{
+    private readonly Sampler _sampler;
+
+    public AmbientOccluder(Sampler sampler, double radianceScale = 1.0, RGBColor? color = null, double minAmount = 0.0)
+    {
+        _sampler = sampler;
+        _sampler.MapSamplesToHemisphere(1);
+        RadianceScale = radianceScale;
+        Color = color ?? RGBColor.White;
+        MinAmount = minAmount;
+    }
+
+    public double RadianceScale { get; set; }
+    public RGBColor Color { get; set; }
+    public double MinAmount { get; set; }
+
+    /// <summary>Orthonormal frame with w along <paramref name="n"/>; the jittered up vector avoids degeneracy at the poles.</summary>
+    public static (Vector3D U, Vector3D V, Vector3D W) Frame(Normal3D n)
+    {
+        var w = n.ToVector();
+        var v = new Vector3D(0.0072, 1.0, 0.0034).Cross(w);
+        v.Normalize();
+        var u = v.Cross(w);
+        return (u, v, w);
+    }
+
+    public override Vector3D GetDirection(ShadingRecord sr)
+    {
+        var (u, v, w) = Frame(sr.Normal);
+        var s = _sampler.SampleHemisphere();
+        return s.x * u + s.y * v + s.z * w;
+    }
+
+    public override bool InShadow(in Ray ray, ShadingRecord sr) =>
+        sr.World is { } world && world.ShadowHit(ray, MathConstants.HugeValue);
+
+    public override RGBColor L(ShadingRecord sr)
+    {
+        var direction = GetDirection(sr);
+        var shadowRay = new Ray(sr.HitPoint, direction);
+        var scale = CastsShadows && InShadow(shadowRay, sr) ? MinAmount : 1.0;
+        return scale * RadianceScale * Color;
+    }
+}

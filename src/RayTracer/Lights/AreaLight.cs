@@ -1,0 +1,63 @@
+using RayTracer.Geometry;
+using RayTracer.Materials;
+using RayTracer.Util;
+
+namespace RayTracer.Lights;
+
+/// <summary>
+/// Light emitted by a surface (rectangle, disk, sphere, …) with an emissive material. Each direction query
+/// samples a point on the surface uniformly by area; the estimator divides by its density.
+/// </summary>
+public sealed class AreaLight : Light
+{
+    private sealed class LightSample
+    {
+        public Point3D Point;
+        public Normal3D Normal;
+        public Vector3D Wi;
+    }
+
+    private readonly ThreadLocal<LightSample> _sample = new(() => new LightSample());
+
+    public AreaLight(GeometricObject shape, Material emitter)
+    {
+        Shape = shape;
+        Emitter = emitter;
+    }
+
+    public GeometricObject Shape { get; }
+    public Material Emitter { get; }
+
+    public override Vector3D GetDirection(ShadingRecord sr)
+    {
+        var s = _sample.Value!;
+        s.Point = Shape.Sample();
+        s.Normal = Shape.GetNormal(s.Point);
+        s.Wi = (s.Point - sr.HitPoint).Normalized();
+        sr.Direction = s.Wi;
+        return s.Wi;
+    }
+
+    public override bool InShadow(in Ray ray, ShadingRecord sr)
+    {
+        var s = _sample.Value!;
+        var distance = (s.Point - ray.o).Dot(ray.d);
+        // Shorten the test a little so the light's own surface does not shadow itself.
+        return sr.World is { } world && world.ShadowHit(ray, distance * (1 - 1e-9));
+    }
+
+    public override RGBColor L(ShadingRecord sr)
+    {
+        var s = _sample.Value!;
+        return -s.Normal.Dot(s.Wi) > 0 ? Emitter.GetLe(sr) : RGBColor.Black;
+    }
+
+    public override double G(ShadingRecord sr)
+    {
+        var s = _sample.Value!;
+        var cos = -s.Normal.Dot(s.Wi);
+        return cos / s.Point.DistanceSquared(sr.HitPoint);
+    }
+
+    public override double Pdf(ShadingRecord sr) => Shape.Pdf(sr);
+}

@@ -1,0 +1,38 @@
+using RayTracer.Textures;
+using RayTracer.Util;
+
+namespace RayTracer.Materials;
+
+/// <summary>
+/// A light-emitting surface: radiance ls·ce from its front side (the side the normal points to),
+/// black from behind. The colour may come from a texture.
+/// </summary>
+public class Emissive : Material
+{
+    public Emissive(double radianceScale = 1.0, RGBColor? color = null)
+        : this(radianceScale, new ConstantTexture<RGBColor>(color ?? RGBColor.White))
+    {
+    }
+
+    public Emissive(double radianceScale, Texture<RGBColor> color)
+    {
+        RadianceScale = radianceScale;
+        Color = color;
+    }
+
+    public double RadianceScale { get; set; }
+    public Texture<RGBColor> Color { get; set; }
+
+    /// <summary>When false, the back side emits too (for environment domes seen from inside).</summary>
+    public bool OneSided { get; set; } = true;
+
+    public override RGBColor GetLe(ShadingRecord sr) => RadianceScale * Color.GetValue(sr);
+
+    public override RGBColor Shade(ShadingRecord sr) =>
+        !OneSided || -sr.Normal.Dot(sr.Ray.d) > 0 ? GetLe(sr) : RGBColor.Black;
+
+    public override RGBColor PathShade(ShadingRecord sr) => Shade(sr);
+
+    /// <summary>The first diffuse bounce already sampled this light explicitly; seeing it again would double it.</summary>
+    public override RGBColor GlobalShade(ShadingRecord sr) => sr.Depth == 1 ? RGBColor.Black : Shade(sr);
+}

@@ -1,0 +1,45 @@
+using RayTracer.BRDFs;
+using RayTracer.Textures;
+using RayTracer.Util;
+
+namespace RayTracer.Materials;
+
+/// <summary>Diffuse surface: Lambertian ambient and diffuse terms with a shared colour.</summary>
+public class Matte : Material
+{
+    public Matte(double ka = 0.25, double kd = 0.75, RGBColor? cd = null)
+        : this(ka, kd, new ConstantTexture<RGBColor>(cd ?? RGBColor.White))
+    {
+    }
+
+    protected Matte(double ka, double kd, Texture<RGBColor> color)
+    {
+        AmbientBrdf = new Lambertian(ka, color);
+        DiffuseBrdf = new Lambertian(kd, color);
+    }
+
+    public Lambertian AmbientBrdf { get; }
+    public Lambertian DiffuseBrdf { get; }
+
+    public override RGBColor Shade(ShadingRecord sr) =>
+        Ambient(sr, AmbientBrdf.Rho(sr, default)) + DirectLighting(sr, DiffuseBrdf.F, sampledLights: false);
+
+    public override RGBColor AreaLightShade(ShadingRecord sr) =>
+        Ambient(sr, AmbientBrdf.Rho(sr, default)) + DirectLighting(sr, DiffuseBrdf.F, sampledLights: true);
+
+    public override RGBColor PathShade(ShadingRecord sr) => IndirectBounce(sr);
+
+    public override RGBColor GlobalShade(ShadingRecord sr) =>
+        sr.Depth == 0 ? AreaLightShade(sr) + IndirectBounce(sr) : IndirectBounce(sr);
+
+    private RGBColor IndirectBounce(ShadingRecord sr)
+    {
+        var wo = -sr.Ray.d.Normalized();
+        var f = DiffuseBrdf.SampleF(sr, wo, out var wi, out var pdf);
+        var ndotwi = sr.Normal.Dot(wi);
+        if (pdf <= 0 || ndotwi <= 0)
+            return RGBColor.Black;
+        var tracer = sr.World!.Tracer!;
+        return f * tracer.TraceRay(new Ray(sr.HitPoint, wi), sr.Depth + 1) * (ndotwi / pdf);
+    }
+}

@@ -1,0 +1,48 @@
+using RayTracer.BRDFs;
+using RayTracer.Textures;
+using RayTracer.Util;
+
+namespace RayTracer.Materials;
+
+/// <summary>Diffuse plus a glossy highlight (Lambertian + Phong lobe).</summary>
+public class Phong : Material
+{
+    public Phong(double ka = 0.25, double kd = 0.6, RGBColor? cd = null, double ks = 0.2, double exponent = 20, RGBColor? cs = null)
+        : this(ka, kd, new ConstantTexture<RGBColor>(cd ?? RGBColor.White), ks, exponent, cs)
+    {
+    }
+
+    protected Phong(double ka, double kd, Texture<RGBColor> color, double ks, double exponent, RGBColor? cs)
+    {
+        AmbientBrdf = new Lambertian(ka, color);
+        DiffuseBrdf = new Lambertian(kd, color);
+        SpecularBrdf = new GlossySpecular(ks, exponent, cs ?? RGBColor.White);
+    }
+
+    public Lambertian AmbientBrdf { get; }
+    public Lambertian DiffuseBrdf { get; }
+    public GlossySpecular SpecularBrdf { get; }
+
+    private RGBColor DiffusePlusSpecular(ShadingRecord sr, Vector3D wo, Vector3D wi) =>
+        DiffuseBrdf.F(sr, wo, wi) + SpecularBrdf.F(sr, wo, wi);
+
+    public override RGBColor Shade(ShadingRecord sr) =>
+        Ambient(sr, AmbientBrdf.Rho(sr, default)) + DirectLighting(sr, DiffusePlusSpecular, sampledLights: false);
+
+    public override RGBColor AreaLightShade(ShadingRecord sr) =>
+        Ambient(sr, AmbientBrdf.Rho(sr, default)) + DirectLighting(sr, DiffusePlusSpecular, sampledLights: true);
+
+    /// <summary>Diffuse bounce only; the highlight is a direct-lighting effect.</summary>
+    public override RGBColor PathShade(ShadingRecord sr)
+    {
+        var wo = -sr.Ray.d.Normalized();
+        var f = DiffuseBrdf.SampleF(sr, wo, out var wi, out var pdf);
+        var ndotwi = sr.Normal.Dot(wi);
+        if (pdf <= 0 || ndotwi <= 0)
+            return RGBColor.Black;
+        return f * sr.World!.Tracer!.TraceRay(new Ray(sr.HitPoint, wi), sr.Depth + 1) * (ndotwi / pdf);
+    }
+
+    public override RGBColor GlobalShade(ShadingRecord sr) =>
+        sr.Depth == 0 ? AreaLightShade(sr) + PathShade(sr) : PathShade(sr);
+}

@@ -1,0 +1,10 @@
+using RayTracer.Textures;
+using RayTracer.Util;
+
+namespace RayTracer.Materials;
+
+/// <summary>Matte material whose colour comes from a texture (spatially varying).</summary>
+public sealed class SVMatte(double ka, double kd, Texture<RGBColor> color) : Matte(ka, kd, color)
+{
+    public Texture<RGBColor> Color { get; } = color;
+}
