@@ -1,0 +1,7 @@
+namespace GMac.Dsl.Diagnostics;
+
+public enum DiagnosticSeverity
+{
+    Warning,
+    Error,
+}

@@ -1,0 +1,10 @@
+namespace GMac.Dsl.Diagnostics;
+
+/// <summary>
+/// A stretch of a source file: 1-based line and column of its first character,
+/// plus the 0-based character offset and length for tools that underline text.
+/// </summary>
+public readonly record struct SourceSpan(string FilePath, int Line, int Column, int Start, int Length)
+{
+    public static SourceSpan None(string filePath) => new(filePath, 1, 1, 0, 0);
+}

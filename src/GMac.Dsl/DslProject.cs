@@ -1,0 +1,71 @@
+using System.Diagnostics;
+using GMac.Dsl.Diagnostics;
+using GMac.Dsl.Semantics;
+using GMac.Dsl.Syntax;
+
+namespace GMac.Dsl;
+
+/// <summary>
+/// A GMacDSL project: every <c>*.gmac</c> file under a folder, parsed and bound
+/// together so that definitions resolve by name whatever file holds them.
+/// </summary>
+public sealed class DslProject
+{
+    private DslProject(IReadOnlyList<SyntaxTree> trees, SemanticModel model, IReadOnlyList<Diagnostic> diagnostics, TimeSpan elapsed)
+    {
+        SyntaxTrees = trees;
+        Model = model;
+        Diagnostics = diagnostics;
+        ParseAndBindTime = elapsed;
+    }
+
+    public IReadOnlyList<SyntaxTree> SyntaxTrees { get; }
+    public SemanticModel Model { get; }
+    public IReadOnlyList<Diagnostic> Diagnostics { get; }
+    public bool HasErrors => Diagnostics.Any(d => d.IsError);
+
+    /// <summary>Wall time of parsing and binding, without reading the files.</summary>
+    public TimeSpan ParseAndBindTime { get; }
+
+    public static DslProject Load(string directory)
+    {
+        var files = new List<(string Path, string Text)>();
+        var bag = new DiagnosticBag();
+        if (!Directory.Exists(directory))
+        {
+            bag.ReportCannotRead(SourceSpan.None(directory), $"DSL folder '{directory}' does not exist");
+            return FromSources(files, bag.Items);
+        }
+        var paths = Directory.GetFiles(directory, "*.gmac", SearchOption.AllDirectories);
+        Array.Sort(paths, StringComparer.Ordinal);
+        if (paths.Length == 0) bag.ReportCannotRead(SourceSpan.None(directory), $"no *.gmac files in '{directory}'");
+        foreach (var path in paths)
+        {
+            try
+            {
+                files.Add((path, File.ReadAllText(path)));
+            }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+            {
+                bag.ReportCannotRead(SourceSpan.None(path), $"cannot read file: {e.Message}");
+            }
+        }
+        return FromSources(files, bag.Items);
+    }
+
+    /// <summary>Parses and binds in-memory sources (path, text).</summary>
+    public static DslProject FromSources(IEnumerable<(string Path, string Text)> sources, IReadOnlyList<Diagnostic>? earlier = null)
+    {
+        var watch = Stopwatch.StartNew();
+        var trees = sources.Select(s => SyntaxTree.Parse(s.Path, s.Text)).ToList();
+        var model = Binder.Bind(trees);
+        watch.Stop();
+        var diagnostics = (earlier ?? []).Concat(model.Diagnostics)
+            .OrderBy(d => d.Span.FilePath, StringComparer.Ordinal)
+            .ThenBy(d => d.Span.Line).ThenBy(d => d.Span.Column)
+            .ToList();
+        return new DslProject(trees, model, diagnostics, watch.Elapsed);
+    }
+
+    public static DslProject FromSource(string text, string path = "test.gmac") => FromSources([(path, text)]);
+}

@@ -1,0 +1,11 @@
+namespace GMac.Dsl.Semantics;
+
+public enum FrameKind
+{
+    Euclidean,
+    InnerProductMatrix,
+    Signature,
+    Orthogonalized,
+    SubspaceOf,
+    TransformedByBcm,
+}

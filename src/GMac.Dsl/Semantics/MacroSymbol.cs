@@ -1,0 +1,15 @@
+using GMac.Dsl.Diagnostics;
+
+namespace GMac.Dsl.Semantics;
+
+/// <summary>A GA macro: typed inputs and outputs and its bound statements.</summary>
+public sealed class MacroSymbol(string name, SourceSpan declaration) : Symbol(name, declaration)
+{
+    public IReadOnlyList<VariableSymbol> Inputs { get; internal set; } = [];
+    public IReadOnlyList<VariableSymbol> Outputs { get; internal set; } = [];
+    public IReadOnlyList<VariableSymbol> Temporaries { get; internal set; } = [];
+    public IReadOnlyList<BoundStatement> Statements { get; internal set; } = [];
+
+    /// <summary>Macros this one calls, directly.</summary>
+    public IReadOnlyList<MacroSymbol> Callees { get; internal set; } = [];
+}

@@ -1,0 +1,8 @@
+namespace GMac.Dsl.Semantics;
+
+public enum VariableKind
+{
+    Input,
+    Output,
+    Temporary,
+}
