@@ -1,0 +1,188 @@
+using GMac.Core.Numerics;
+
+namespace GMac.Core.Symbolic;
+
+/// <summary>
+/// Our own simplifier (no CAS package is available). Bottom-up over the expression it applies:
+/// <list type="bullet">
+/// <item>sqrt(c·m) with c a perfect square: even powers leave the root as abs(...) — so
+/// sqrt(x^2) is |x| — and abs(u) becomes u or -u when interval arithmetic over the bounds fixes
+/// the sign of u (sqrt(x^2) → x under x ≥ 0);</item>
+/// <item>sqrt(a)^k → a^(k div 2)·sqrt(a)^(k mod 2), and abs(a)^(2k) → a^(2k);</item>
+/// <item>exp(a)^p·exp(b)^q → exp(p·a + q·b); exp(log(u)) → u when u &gt; 0;</item>
+/// <item>sin(u)^p·cos(u)^-q → tan(u)^min(p,q)·...;</item>
+/// <item>then reduction by the side relations of the assumptions (sin^2 + cos^2 = 1, user relations).</item>
+/// </list>
+/// It does not factor, does not combine fractions over a common denominator and knows nothing
+/// of trigonometric sum formulas. The canonical form already folds constants, cancels like
+/// terms, takes odd/even signs out of sin, cos, tan, abs and maps log(exp(u)) to u.
+/// </summary>
+public sealed class RuleBasedCas : ICasAdapter
+{
+    private const int MaxRounds = 8;
+
+    public string Name => "rules-v1";
+
+    public Scalar Parse(string text) => Scalar.Parse(text);
+
+    public Scalar Simplify(Scalar expression, Assumptions assumptions)
+    {
+        ArgumentNullException.ThrowIfNull(expression);
+        ArgumentNullException.ThrowIfNull(assumptions);
+        var current = assumptions.Relations.Reduce(expression);
+        for (var round = 0; round < MaxRounds; round++)
+        {
+            var pass = new Pass(assumptions);
+            var next = assumptions.Relations.Reduce(pass.Rewrite(current));
+            if (ReferenceEquals(next, current)) break;
+            current = next;
+        }
+        return current;
+    }
+
+    /// <summary>One bottom-up rewrite, memoized on atoms.</summary>
+    private sealed class Pass(Assumptions assumptions)
+    {
+        private readonly Dictionary<Atom, Scalar> _atoms = new();
+
+        public Scalar Rewrite(Scalar value)
+        {
+            var sum = Scalar.Zero;
+            foreach (var term in value.TermArray)
+            {
+                var factors = term.Monomial.FactorArray;
+                var product = Scalar.Constant(term.Coefficient);
+                foreach (var factor in factors)
+                    product *= Scalar.IntegerPower(RewriteAtom(factor.Atom), factor.Power);
+                foreach (var rebuilt in product.TermArray) sum += RewriteTerm(rebuilt);
+            }
+            return sum;
+        }
+
+        private Scalar RewriteAtom(Atom atom)
+        {
+            if (_atoms.TryGetValue(atom, out var known)) return known;
+            Scalar result;
+            if (atom.ArgumentArray.Length == 0) result = atom.AsScalar();
+            else
+            {
+                var arguments = new Scalar[atom.ArgumentArray.Length];
+                for (var i = 0; i < arguments.Length; i++) arguments[i] = Rewrite(atom.ArgumentArray[i]);
+                result = atom.Kind switch
+                {
+                    AtomKind.Sqrt => SquareRoot(arguments[0]),
+                    AtomKind.Abs => AbsoluteValue(arguments[0]),
+                    AtomKind.Exp => Exponential(arguments[0]),
+                    _ => Scalar.Apply(atom.Kind, arguments),
+                };
+            }
+            _atoms[atom] = result;
+            return result;
+        }
+
+        private Scalar AbsoluteValue(Scalar u)
+        {
+            var bounds = assumptions.BoundsOf(u);
+            if (bounds.IsNonNegative) return u;
+            if (bounds.IsNonPositive) return -u;
+            return Scalar.Abs(u);
+        }
+
+        private Scalar SquareRoot(Scalar u)
+        {
+            if (u.TermArray.Length != 1) return Scalar.Sqrt(u);
+            var term = u.TermArray[0];
+            if (term.Coefficient.Sign < 0 || !term.Coefficient.TryExactSqrt(out var root)) return Scalar.Sqrt(u);
+            // sqrt(c·Π a^p) = sqrt(c)·|Π a^(p div 2)|·sqrt(Π a^(p mod 2)), valid wherever the root is real.
+            var outside = new List<Factor>();
+            var inside = new List<Factor>();
+            foreach (var factor in term.Monomial.FactorArray)
+            {
+                var half = factor.Power / 2;
+                var remainder = factor.Power - 2 * half;
+                if (half != 0) outside.Add(factor with { Power = half });
+                if (remainder != 0) inside.Add(factor with { Power = remainder });
+            }
+            if (outside.Count == 0 && root.IsOne) return Scalar.Sqrt(u);
+            var outer = AbsoluteValue(Scalar.FromTerm(Rational.One, Monomial.Create(outside)));
+            var inner = Scalar.Sqrt(Scalar.FromTerm(Rational.One, Monomial.Create(inside)));
+            return Scalar.Constant(root) * outer * inner;
+        }
+
+        private Scalar Exponential(Scalar u)
+        {
+            if (u.TermArray.Length == 1 && u.TermArray[0].Coefficient.IsOne)
+            {
+                var factors = u.TermArray[0].Monomial.FactorArray;
+                if (factors.Length == 1 && factors[0].Power == 1 && factors[0].Atom.Kind == AtomKind.Log)
+                {
+                    var argument = factors[0].Atom.ArgumentArray[0];
+                    if (assumptions.BoundsOf(argument).IsPositive) return argument;
+                }
+            }
+            return Scalar.Exp(u);
+        }
+
+        /// <summary>Rules on the factors of one monomial of the rebuilt expression.</summary>
+        private static Scalar RewriteTerm(Term term)
+        {
+            var factors = term.Monomial.FactorArray;
+            var needed = false;
+            var exponentials = 0;
+            foreach (var factor in factors)
+            {
+                switch (factor.Atom.Kind)
+                {
+                    case AtomKind.Sqrt when Math.Abs(factor.Power) >= 2:
+                    case AtomKind.Abs when factor.Power % 2 == 0:
+                        needed = true;
+                        break;
+                    case AtomKind.Exp:
+                        exponentials++;
+                        break;
+                    case AtomKind.Cos when factor.Power < 0:
+                        needed |= Array.Exists(factors, f => f.Atom.Kind == AtomKind.Sin && f.Power > 0 && ReferenceEquals(f.Atom.ArgumentArray[0], factor.Atom.ArgumentArray[0]));
+                        break;
+                }
+            }
+            if (!needed && exponentials < 2) return Scalar.FromTerm(term.Coefficient, term.Monomial);
+
+            var result = Scalar.Constant(term.Coefficient);
+            var exponent = Scalar.Zero;
+            var remaining = new List<Factor>(factors);
+            for (var i = 0; i < remaining.Count; i++)
+            {
+                var factor = remaining[i];
+                var atom = factor.Atom;
+                if (atom.Kind == AtomKind.Sqrt && Math.Abs(factor.Power) >= 2)
+                {
+                    var half = factor.Power / 2;
+                    result *= Scalar.IntegerPower(atom.ArgumentArray[0], half);
+                    remaining[i] = factor with { Power = factor.Power - 2 * half };
+                }
+                else if (atom.Kind == AtomKind.Abs && factor.Power % 2 == 0)
+                {
+                    result *= Scalar.IntegerPower(atom.ArgumentArray[0], factor.Power);
+                    remaining[i] = factor with { Power = 0 };
+                }
+                else if (atom.Kind == AtomKind.Exp && exponentials >= 2)
+                {
+                    exponent += Scalar.Scale(atom.ArgumentArray[0], factor.Power);
+                    remaining[i] = factor with { Power = 0 };
+                }
+                else if (atom.Kind == AtomKind.Cos && factor.Power < 0)
+                {
+                    var j = remaining.FindIndex(f => f.Atom.Kind == AtomKind.Sin && f.Power > 0 && ReferenceEquals(f.Atom.ArgumentArray[0], atom.ArgumentArray[0]));
+                    if (j < 0) continue;
+                    var k = Math.Min(remaining[j].Power, -factor.Power);
+                    result *= Scalar.IntegerPower(Scalar.Tan(atom.ArgumentArray[0]), k);
+                    remaining[j] = remaining[j] with { Power = remaining[j].Power - k };
+                    remaining[i] = factor with { Power = factor.Power + k };
+                }
+            }
+            if (exponentials >= 2) result *= Scalar.Exp(exponent);
+            remaining.RemoveAll(f => f.Power == 0);
+            return result * Scalar.FromTerm(Rational.One, Monomial.Create(remaining));
+        }
+    }
+}
