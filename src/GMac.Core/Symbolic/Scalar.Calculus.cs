@@ -187,6 +187,11 @@ public sealed partial class Scalar
         var a = atom.ArgumentArray;
         var self = atom.AsScalar();
         Scalar result;
+        if (atom.Kind != AtomKind.Variable && !Array.Exists(a, argument => argument.Variables.Contains(variable)))
+        {
+            memo[atom] = Zero;
+            return Zero;
+        }
         switch (atom.Kind)
         {
             case AtomKind.Variable:

@@ -67,7 +67,7 @@ public sealed partial class Scalar
     {
         if (y.TryGetConstant(out var cy) && x.TryGetConstant(out var cx))
         {
-            if (cy.IsZero && cx.Sign > 0) return Zero;
+            if (cy.IsZero && cx.Sign >= 0) return Zero; // atan2(0, 0) = 0 as in Math.Atan2
             if (cy.IsZero && cx.Sign < 0) return Pi;
             if (cx.IsZero && cy.Sign != 0) return Scale(Pi, new Rational(cy.Sign, 2));
             if (cx == cy && cx.Sign != 0) return Scale(Pi, new Rational(cx.Sign > 0 ? 1 : -3, 4));

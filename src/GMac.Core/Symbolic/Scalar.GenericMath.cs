@@ -62,6 +62,20 @@ public sealed partial class Scalar :
             ? Constant(Rational.FromDouble(value))
             : throw new OverflowException($"{value} has no exact symbolic value.");
 
+    /// <summary>Exact conversion from any built-in number (doubles and decimals by their exact value).</summary>
+    public static Scalar CreateChecked<TOther>(TOther value) where TOther : INumberBase<TOther> => Create(value);
+
+    public static Scalar CreateSaturating<TOther>(TOther value) where TOther : INumberBase<TOther> => Create(value);
+
+    public static Scalar CreateTruncating<TOther>(TOther value) where TOther : INumberBase<TOther> => Create(value);
+
+    private static Scalar Create<TOther>(TOther value) where TOther : INumberBase<TOther>
+    {
+        if (TryConvertFrom(value, out var result)) return result;
+        if (TOther.TryConvertToChecked<Scalar>(value, out var converted)) return converted;
+        throw new NotSupportedException($"Values of type {typeof(TOther).Name} cannot be converted to a symbolic scalar.");
+    }
+
     static bool INumberBase<Scalar>.TryConvertFromChecked<TOther>(TOther value, out Scalar result) => TryConvertFrom(value, out result);
     static bool INumberBase<Scalar>.TryConvertFromSaturating<TOther>(TOther value, out Scalar result) => TryConvertFrom(value, out result);
     static bool INumberBase<Scalar>.TryConvertFromTruncating<TOther>(TOther value, out Scalar result) => TryConvertFrom(value, out result);
