@@ -499,7 +499,7 @@ internal sealed partial class Binder
                 if (s == 1)
                 {
                     var cycle = path.Skip(path.IndexOf(callee)).Select(m => m.Name).Append(callee.Name);
-                    _diagnostics.ReportCyclicCall(macro.Declaration, string.Join(" -> ", cycle));
+                    _diagnostics.ReportCyclicCall(callee.Declaration, string.Join(" -> ", cycle));
                 }
                 else if (s == 0) Visit(callee);
             }
