@@ -46,6 +46,14 @@ public abstract class GeometricObject
         return Intersect(ray, out tmin);
     }
 
+    /// <summary>
+    /// Whether a shadow-casting surface lies on the ray with t in (epsilon, <paramref name="maxDistance"/>).
+    /// Acceleration structures answer this by stopping at the first hit they find, so lights that
+    /// know the distance to the light should call this rather than <see cref="ShadowHit(in Ray, out double)"/>.
+    /// </summary>
+    public virtual bool Occludes(in Ray ray, double maxDistance) =>
+        ShadowHit(ray, out double t) && t < maxDistance;
+
     /// <summary>World-space bounds; unbounded objects return <see cref="BoundingBox.Infinite"/>.</summary>
     public abstract BoundingBox GetBoundingBox();
 
