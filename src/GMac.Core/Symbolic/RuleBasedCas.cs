@@ -47,16 +47,16 @@ public sealed class RuleBasedCas : ICasAdapter
 
         public Scalar Rewrite(Scalar value)
         {
-            var sum = Scalar.Zero;
+            var sum = new ScalarSumBuilder();
             foreach (var term in value.TermArray)
             {
                 var factors = term.Monomial.FactorArray;
                 var product = Scalar.Constant(term.Coefficient);
                 foreach (var factor in factors)
                     product *= Scalar.IntegerPower(RewriteAtom(factor.Atom), factor.Power);
-                foreach (var rebuilt in product.TermArray) sum += RewriteTerm(rebuilt);
+                foreach (var rebuilt in product.TermArray) sum.Add(RewriteTerm(rebuilt));
             }
-            return sum;
+            return sum.ToScalar();
         }
 
         private Scalar RewriteAtom(Atom atom)

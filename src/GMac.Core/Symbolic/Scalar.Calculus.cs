@@ -116,16 +116,16 @@ public sealed partial class Scalar
             images[i] = row;
         }
         if (!changed) return s;
-        var sum = Zero;
+        var sum = new ScalarSumBuilder();
         for (var i = 0; i < s._terms.Length; i++)
         {
             var term = s._terms[i];
             var factors = term.Monomial.FactorArray;
             var product = Constant(term.Coefficient);
             for (var j = 0; j < factors.Length; j++) product *= IntegerPower(images[i][j], factors[j].Power);
-            sum += product;
+            sum.Add(product);
         }
-        return sum;
+        return sum.ToScalar();
     }
 
     private static Scalar MapAtom(Atom atom, Func<Atom, Scalar?> rewrite, Dictionary<Atom, Scalar> memo)

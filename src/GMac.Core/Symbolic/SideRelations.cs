@@ -104,7 +104,7 @@ public sealed class SideRelations
     private Scalar? ReduceOnce(Scalar value)
     {
         List<Term>? kept = null;
-        var rewritten = Scalar.Zero;
+        var rewritten = new ScalarSumBuilder();
         var terms = value.TermArray;
         for (var i = 0; i < terms.Length; i++)
         {
@@ -120,9 +120,11 @@ public sealed class SideRelations
                 kept = new List<Term>(terms.Length);
                 for (var j = 0; j < i; j++) kept.Add(terms[j]);
             }
-            rewritten += step;
+            rewritten.Add(step);
         }
-        return kept is null ? null : Scalar.FromTerms(kept) + rewritten;
+        if (kept is null) return null;
+        foreach (var term in kept) rewritten.Add(term);
+        return rewritten.ToScalar();
     }
 
     private Scalar? RewriteTerm(Term term)
