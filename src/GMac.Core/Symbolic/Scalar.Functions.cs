@@ -6,8 +6,6 @@ namespace GMac.Core.Symbolic;
 // canonical form (odd functions pull the sign of the leading term out, even ones drop it).
 public sealed partial class Scalar
 {
-    public static Scalar Pi { get; } = Atom.Create(AtomKind.Pi, "pi").AsScalar();
-
     /// <summary>Euler's number, as exp(1).</summary>
     public static Scalar E => Exp(One);
 

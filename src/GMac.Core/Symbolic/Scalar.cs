@@ -17,6 +17,10 @@ public sealed partial class Scalar : IComparable<Scalar>
     public static Scalar One { get; } = Intern([new Term(Rational.One, Monomial.One)]);
     public static Scalar NegativeOne { get; } = Intern([new Term(Rational.MinusOne, Monomial.One)]);
 
+    // Every static scalar lives in this file: initializers in other partial files have no defined
+    // order relative to the intern table above.
+    public static Scalar Pi { get; } = Atom.Create(AtomKind.Pi, "pi").AsScalar();
+
     private readonly Term[] _terms;
     private readonly int _hash;
     private IReadOnlySet<string>? _variables;

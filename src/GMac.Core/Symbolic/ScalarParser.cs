@@ -14,8 +14,12 @@ internal sealed class ScalarParser
     // Integer powers are expanded, so an absurd exponent would only exhaust memory.
     private const int MaxIntegerExponent = 4096;
 
+    // Nesting deeper than this is refused rather than risking the stack.
+    private const int MaxDepth = 200;
+
     private readonly string _text;
     private int _position;
+    private int _depth;
 
     private ScalarParser(string text) => _text = text;
 
@@ -104,9 +108,18 @@ internal sealed class ScalarParser
 
     private Scalar ParseUnary()
     {
-        if (Accept('-')) return -ParseUnary();
-        if (Accept('+')) return ParseUnary();
-        return ParsePower();
+        SkipSpace();
+        if (++_depth > MaxDepth) throw Error($"the expression is nested more than {MaxDepth} levels deep", _position);
+        try
+        {
+            if (Accept('-')) return -ParseUnary();
+            if (Accept('+')) return ParseUnary();
+            return ParsePower();
+        }
+        finally
+        {
+            _depth--;
+        }
     }
 
     private Scalar ParsePower()
@@ -128,6 +141,10 @@ internal sealed class ScalarParser
         catch (OverflowException)
         {
             throw Error("the exponent is too large", at);
+        }
+        catch (DivideByZeroException)
+        {
+            throw Error("zero raised to a negative power", start);
         }
     }
 
@@ -165,7 +182,9 @@ internal sealed class ScalarParser
             _position++;
             if (Current is '+' or '-') _position++;
             if (!char.IsAsciiDigit(Current)) throw Error("expected digits in the exponent of the number", save);
+            var digits = _position;
             while (char.IsAsciiDigit(Current)) _position++;
+            if (_position - digits > 4) throw Error("the exponent of the number is too large", save);
         }
         if (IsIdentifierStart(Current)) throw Error($"unexpected '{Current}' after a number (write '*' for a product)", _position);
         var token = _text[start.._position];
@@ -196,6 +215,18 @@ internal sealed class ScalarParser
         if (arguments.Count != arity)
             throw Error($"'{name}' takes {arity} argument{(arity == 1 ? "" : "s")} but was given {arguments.Count}", start);
         Expect(')', $"to close the arguments of '{name}'");
+        try
+        {
+            return ApplyFunction(name, arguments);
+        }
+        catch (Exception e) when (e is DivideByZeroException or OverflowException)
+        {
+            throw Error($"'{name}' is undefined for these arguments: {e.Message}", start);
+        }
+    }
+
+    private static Scalar ApplyFunction(string name, List<Scalar> arguments)
+    {
         return name switch
         {
             "sin" => Scalar.Sin(arguments[0]),

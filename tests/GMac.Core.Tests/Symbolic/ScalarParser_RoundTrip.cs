@@ -57,11 +57,24 @@ public class ScalarParser_RoundTrip
     [InlineData("(x + y))", 8)]
     [InlineData("x / 0", 5)]
     [InlineData("1e+", 2)]
+    [InlineData("pow(0, -1)", 1)]
+    [InlineData("(x - x)^(-2)", 1)]
+    [InlineData("2^100000", 3)]
+    [InlineData("1e99999", 2)]
     public void Syntax_errors_carry_the_column(string text, int column)
     {
         var error = Assert.Throws<ScalarSyntaxException>(() => Scalar.Parse(text));
         Assert.Equal(column, error.Column);
         Assert.StartsWith($"column {column}: ", error.Message);
         Assert.False(Scalar.TryParse(text, out _));
+    }
+
+    [Fact]
+    public void Deep_nesting_is_an_error_not_a_crash()
+    {
+        var text = new string('(', 100_000) + "x" + new string(')', 100_000);
+        var error = Assert.Throws<ScalarSyntaxException>(() => Scalar.Parse(text));
+        Assert.Contains("nested", error.Message);
+        Assert.Same(Scalar.Variable("x"), Scalar.Parse(new string('(', 50) + "x" + new string(')', 50)));
     }
 }

@@ -120,4 +120,18 @@ public class Scalar_CanonicalForm
     {
         Assert.Throws<DivideByZeroException>(() => X / (Y - Y));
     }
+
+    [Fact]
+    public void Interning_is_consistent_across_threads()
+    {
+        var results = new Scalar[8];
+        Parallel.For(0, results.Length, i =>
+        {
+            var s = Scalar.Zero;
+            for (var k = 0; k < 200; k++)
+                s += Scalar.Pow(Scalar.Variable($"t{k % 17}") + Scalar.Sin(Scalar.Variable("u")), 2) * Scalar.Constant(k);
+            results[i] = s;
+        });
+        foreach (var r in results) Assert.Same(results[0], r);
+    }
 }
