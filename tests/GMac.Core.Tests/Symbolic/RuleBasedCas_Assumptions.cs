@@ -34,6 +34,17 @@ public class RuleBasedCas_Assumptions
     }
 
     [Fact]
+    public void Sums_and_products_of_non_negative_parts_are_recognized_exactly()
+    {
+        var nonNegative = Assumptions.None.WithMinimum("x", 0).WithMinimum("y", 0);
+        Assert.Same(X * X + Y, _cas.Simplify(Scalar.Abs(X * X + Y), Assumptions.None.WithMinimum("y", 0)));
+        Assert.Same(X * Y, _cas.Simplify(Scalar.Abs(X * Y), nonNegative));
+        Assert.Same(Scalar.Sqrt(X) + Y, _cas.Simplify(Scalar.Abs(Scalar.Sqrt(X) + Y), nonNegative));
+        Assert.True(nonNegative.BoundsOf(X * X * Y + Scalar.Exp(-X)).IsNonNegative);
+        Assert.False(Assumptions.None.BoundsOf(X * Y).IsNonNegative);
+    }
+
+    [Fact]
     public void Square_roots_multiplied_by_themselves_give_their_argument()
     {
         var root = Scalar.Sqrt(X + Y);
