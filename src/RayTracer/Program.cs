@@ -1,10 +1,9 @@
+using RayTracer.Cli;
+
 namespace RayTracer;
 
 internal static class Program
 {
-    private static int Main(string[] args)
-    {
-        Console.WriteLine("raytracer: under construction.");
-        return 0;
-    }
+    private static int Main(string[] args) =>
+        Application.Run(args, Console.Out, Console.Error, interactiveProgress: !Console.IsErrorRedirected);
 }
