@@ -40,7 +40,17 @@ internal sealed class CheckCommand : ICommand
             return ExitCodes.Usage;
         }
 
-        var project = DslProject.Load(dsl);
+        DslProject project;
+        try
+        {
+            project = DslProject.Load(dsl);
+        }
+        catch (Exception e) when (e is not OutOfMemoryException)
+        {
+            // A defect of the checker itself: still a message and an exit code, not a stack trace.
+            error.WriteLine($"gmac check: internal error while checking '{dsl}': {e.Message}");
+            return ExitCodes.Diagnostics;
+        }
         foreach (var diagnostic in project.Diagnostics) error.WriteLine(diagnostic);
         var errors = project.Diagnostics.Count(d => d.IsError);
         var warnings = project.Diagnostics.Count - errors;

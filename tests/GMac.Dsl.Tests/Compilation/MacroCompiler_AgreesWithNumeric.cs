@@ -74,6 +74,23 @@ public sealed class MacroCompiler_AgreesWithNumeric
     }
 
     [Fact]
+    public void Parametric_normal_matches_equation_4_11()
+    {
+        var macro = Library.Value.Model.Macros["NormalToParametricVectors"];
+        var w = new MacroCompiler(new CoreFrames()).Compile(macro).Values.Single();
+        foreach (var x in new[] { -1.3, 0.2, 2.9 })
+        {
+            var n = w.Evaluate(new Dictionary<string, double> { ["x.scalar"] = x });
+            var (u1, u2) = (Math.Sin(x), Math.Cos(x));
+            // (4.11): w1 = u2 − u1, w4 = u1² − u2². Its w2 = −w1 is a typo: (4.9) gives
+            // w2 = b d = −(u1 v4 − u4 v1) = u2 − u1 = w1 (the cross product agrees).
+            Assert.Equal(u2 - u1, n["e1"], 12);
+            Assert.Equal(u2 - u1, n["e2"], 12);
+            Assert.Equal(u1 * u1 - u2 * u2, n["e3"], 12);
+        }
+    }
+
+    [Fact]
     public void Circle_curve_matches_equation_6_5()
     {
         var macro = Library.Value.Model.Macros["CircleCurvePoint"];
