@@ -90,7 +90,7 @@ public sealed class RuleBasedCas : ICasAdapter
 
         private Scalar SquareRoot(Scalar u)
         {
-            if (u.TermArray.Length != 1) return Scalar.Sqrt(u);
+            if (u.TermArray.Length > 1) return SquareRootOfSum(u);
             var term = u.TermArray[0];
             if (term.Coefficient.Sign < 0 || !term.Coefficient.TryExactSqrt(out var root)) return Scalar.Sqrt(u);
             // sqrt(c·Π a^p) = sqrt(c)·|Π a^(p div 2)|·sqrt(Π a^(p mod 2)), valid wherever the root is real.
@@ -107,6 +107,33 @@ public sealed class RuleBasedCas : ICasAdapter
             var outer = AbsoluteValue(Scalar.FromTerm(Rational.One, Monomial.Create(outside)));
             var inner = Scalar.Sqrt(Scalar.FromTerm(Rational.One, Monomial.Create(inside)));
             return Scalar.Constant(root) * outer * inner;
+        }
+
+        /// <summary>sqrt(m²·s) = |m|·sqrt(s) for the square part m² of the monomial common to all terms.</summary>
+        private Scalar SquareRootOfSum(Scalar u)
+        {
+            var common = new Dictionary<Atom, int>();
+            var first = true;
+            foreach (var term in u.TermArray)
+            {
+                var powers = new Dictionary<Atom, int>();
+                foreach (var factor in term.Monomial.FactorArray)
+                    if (factor.Power >= 2 && factor.Atom.Kind != AtomKind.Inverse) powers[factor.Atom] = factor.Power;
+                if (first)
+                {
+                    foreach (var (atom, power) in powers) common[atom] = power;
+                    first = false;
+                    continue;
+                }
+                foreach (var atom in common.Keys.ToArray())
+                    common[atom] = powers.TryGetValue(atom, out var p) ? Math.Min(common[atom], p) : 0;
+            }
+            var half = new List<Factor>();
+            foreach (var (atom, power) in common)
+                if (power >= 2) half.Add(new Factor(atom, power / 2));
+            if (half.Count == 0) return Scalar.Sqrt(u);
+            var m = Scalar.FromTerm(Rational.One, Monomial.Create(half));
+            return AbsoluteValue(m) * Scalar.Sqrt(u / (m * m));
         }
 
         private Scalar Exponential(Scalar u)

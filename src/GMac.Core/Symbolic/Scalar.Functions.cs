@@ -43,7 +43,26 @@ public sealed partial class Scalar
     public static Scalar Sqrt(Scalar x)
     {
         if (x.TryGetConstant(out var c) && c.TryExactSqrt(out var root)) return Constant(root);
+        // sqrt(k²·s) = k·sqrt(s) for a square rational content k² > 0 of all coefficients.
+        var content = x.Content();
+        if (!content.IsOne && content.TryExactSqrt(out var k))
+            return Scale(Function(AtomKind.Sqrt, Scale(x, content.Reciprocal())), k);
         return Function(AtomKind.Sqrt, x);
+    }
+
+    /// <summary>The positive rational gcd of the coefficients (gcd of numerators over lcm of denominators).</summary>
+    internal Rational Content()
+    {
+        if (_terms.Length == 0) return Rational.One;
+        var numerator = System.Numerics.BigInteger.Zero;
+        var denominator = System.Numerics.BigInteger.One;
+        foreach (var term in _terms)
+        {
+            numerator = System.Numerics.BigInteger.GreatestCommonDivisor(numerator, term.Coefficient.Numerator);
+            var d = term.Coefficient.Denominator;
+            denominator = denominator / System.Numerics.BigInteger.GreatestCommonDivisor(denominator, d) * d;
+        }
+        return new Rational(numerator, denominator);
     }
 
     public static Scalar Exp(Scalar x)

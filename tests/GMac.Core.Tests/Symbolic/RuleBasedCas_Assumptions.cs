@@ -62,6 +62,19 @@ public class RuleBasedCas_Assumptions
     }
 
     [Fact]
+    public void Common_square_factors_of_a_sum_leave_the_root()
+    {
+        // |a v| for v = (x, y): sqrt(a^2 x^2 + a^2 y^2) = |a| sqrt(x^2 + y^2).
+        var a = Scalar.Variable("a");
+        var norm = Scalar.Sqrt(a * a * X * X + a * a * Y * Y);
+        Assert.Same(Scalar.Abs(a) * Scalar.Sqrt(X * X + Y * Y), _cas.Simplify(norm, Assumptions.None));
+        Assert.Same(a * Scalar.Sqrt(X * X + Y * Y), _cas.Simplify(norm, Assumptions.None.WithMinimum("a", 0)));
+        // A square content comes out in the canonical form already.
+        Assert.Same(Scalar.Scale(Scalar.Sqrt(X + Y), 2), Scalar.Sqrt(Scalar.Scale(X + Y, 4)));
+        Assert.Same(Scalar.Scale(Scalar.Sqrt(X + Y), new Rational(1, 3)), Scalar.Sqrt(Scalar.Scale(X + Y, new Rational(1, 9))));
+    }
+
+    [Fact]
     public void Exponentials_combine_and_log_exp_cancel()
     {
         var product = Scalar.Exp(X) * Scalar.Exp(Y) / Scalar.Exp(Scalar.Scale(Y, 2));
