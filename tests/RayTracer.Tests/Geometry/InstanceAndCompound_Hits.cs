@@ -1,0 +1,146 @@
+using RayTracer.Geometry;
+using RayTracer.Geometry.Compound;
+using RayTracer.Geometry.Generic;
+using RayTracer.Geometry.Universal;
+using RayTracer.Util;
+
+namespace RayTracer.Tests.Geometry;
+
+public class InstanceAndCompound_Hits
+{
+    [Fact]
+    public void InstancedUnitSphereMatchesTheAnalyticSphere()
+    {
+        // Uniform scale 2, rotation and translation: the image is the sphere of radius 2 at the moved centre.
+        var instance = new Instance(new Sphere(Point3D.Origin, 1))
+            .Scale(2).RotateY(0.7).RotateX(-0.3).Translate(3, -1, 2);
+        var reference = new Sphere(new Point3D(3, -1, 2), 2);
+        var random = new SeededRandom(81);
+        var a = new ShadingRecord(null);
+        var b = new ShadingRecord(null);
+        int hits = 0;
+        for (int n = 0; n < 2000; n++)
+        {
+            Ray ray = ImplicitSurfaceMarch.RandomRayTowards(random, 10, 3);
+            ray.o += new Vector3D(3, -1, 2);
+            bool hi = instance.Hit(ray, out double ti, a);
+            bool hr = reference.Hit(ray, out double tr, b);
+            Assert.Equal(hr, hi);
+            if (hi)
+            {
+                hits++;
+                Assert.Equal(tr, ti, 9);
+                Assert.True((a.Normal - b.Normal).Length < 1e-9, $"{a.Normal} vs {b.Normal}");
+            }
+        }
+
+        Assert.True(hits > 300);
+    }
+
+    [Fact]
+    public void NonUniformScaleGivesTheEllipsoidNormal()
+    {
+        // x²/4 + y² + z² = 1; normal ∝ (x/4, y, z).
+        var ellipsoid = new Instance(new Sphere(Point3D.Origin, 1)).Scale(2, 1, 1);
+        var sr = new ShadingRecord(null);
+        var origin = new Point3D(5, 5, 0);
+        var target = new Point3D(2 * Math.Cos(0.6), Math.Sin(0.6), 0);
+        Assert.True(ellipsoid.Hit(new Ray(origin, target - origin), out double t, sr));
+        Assert.Equal(1, t, 9);
+        Normal3D expected = new Normal3D(target.x / 4, target.y, 0).Normalized();
+        Assert.True((sr.Normal - expected).Length < 1e-9);
+        Assert.Equal(new BoundingBox(new Point3D(-2, -1, -1), new Point3D(2, 1, 1)).Max, ellipsoid.GetBoundingBox().Max);
+    }
+
+    [Fact]
+    public void CompoundReturnsTheNearestPartAndItsShading()
+    {
+        var near = new Sphere(new Point3D(0, 0, 2), 1);
+        var far = new Sphere(new Point3D(0, 0, -2), 1.5);
+        var compound = new CompoundObject();
+        compound.Add(far);
+        compound.Add(near);
+        var sr = new ShadingRecord(null);
+        Assert.True(compound.Hit(new Ray(new Point3D(0, 0, 10), new Vector3D(0, 0, -1)), out double t, sr));
+        Assert.Equal(7, t, 12);
+        Assert.Equal(new Normal3D(0, 0, 1), sr.Normal);
+        // Past the near sphere only the far one remains.
+        Assert.True(compound.Hit(new Ray(new Point3D(0.5, 1.2, 10), new Vector3D(0, 0, -1)), out t, sr));
+        Assert.Equal(10 - (-2 + Math.Sqrt(2.25 - 0.25 - 1.44)), t, 9);
+    }
+
+    [Fact]
+    public void SolidCylinderIsClosedWithOutwardNormals()
+    {
+        var solid = new SolidCylinder(-1, 2, 1);
+        var sr = new ShadingRecord(null);
+        Assert.True(solid.Hit(new Ray(new Point3D(0.3, 10, 0.2), new Vector3D(0, -1, 0)), out double t, sr));
+        Assert.Equal(8, t, 12);
+        Assert.Equal(new Normal3D(0, 1, 0), sr.Normal);
+        Assert.True(solid.Hit(new Ray(new Point3D(0, 0, 0), new Vector3D(1, 0, 0)), out t, sr));
+        Assert.Equal(1, t, 12);
+        Assert.Equal(1, sr.Normal.x, 12); // outward from inside, too
+    }
+
+    [Fact]
+    public void BeveledBoxMatchesItsRoundedShape()
+    {
+        // Box [-1,1]³ with bevel 0.25: the inner box is [-0.75,0.75]³ and the surface is at distance 0.25 from it.
+        var box = new BeveledBox(new Point3D(-1, -1, -1), new Point3D(1, 1, 1), 0.25);
+        double F(Point3D p)
+        {
+            double dx = Math.Max(Math.Abs(p.x) - 0.75, 0), dy = Math.Max(Math.Abs(p.y) - 0.75, 0), dz = Math.Max(Math.Abs(p.z) - 0.75, 0);
+            return Math.Sqrt(dx * dx + dy * dy + dz * dz) - 0.25;
+        }
+
+        var random = new SeededRandom(82);
+        var sr = new ShadingRecord(null);
+        for (int n = 0; n < 300; n++)
+        {
+            Ray ray = ImplicitSurfaceMarch.RandomRayTowards(random, 6, 1.5);
+            if (F(ray.o) <= 0)
+            {
+                continue; // from outside only: inside, the hidden inner parts of the pieces are hit
+            }
+
+            double? expected = ImplicitSurfaceMarch.FirstRoot(F, ray, 20, 1e-3);
+            bool hit = box.Hit(ray, out double t, sr);
+            Assert.Equal(expected.HasValue, hit);
+            if (hit)
+            {
+                Assert.Equal(expected!.Value, t, 6);
+                Assert.True(sr.Normal.Dot(ray.d) < 0, "outward normals face rays from outside");
+            }
+        }
+    }
+
+    [Fact]
+    public void BeveledCylinderTopAndRim()
+    {
+        var cyl = new BeveledCylinder(0, 2, 1, 0.2);
+        Assert.True(cyl.Intersect(new Ray(new Point3D(0, 5, 0), new Vector3D(0, -1, 0)), out double t));
+        Assert.Equal(3, t, 12);
+        Assert.True(cyl.Intersect(new Ray(new Point3D(5, 1, 0), new Vector3D(-1, 0, 0)), out t));
+        Assert.Equal(4, t, 12);
+        // At the height of the bevel's centre circle the torus bulges to radius 1.
+        Assert.True(cyl.Intersect(new Ray(new Point3D(5, 1.8, 0), new Vector3D(-1, 0, 0)), out t));
+        Assert.Equal(4, t, 9);
+        // The corner itself is rounded away.
+        Assert.False(cyl.Intersect(new Ray(new Point3D(5, 1.995, 0.0), new Vector3D(-1, 0, 0)), out t) && t < 4.01);
+    }
+
+    [Fact]
+    public void BinaryObjectShowsTheBaseSurfaceOnlyWhereTheMaskIsSet()
+    {
+        // Keep the half of the sphere with u < 0.5 (azimuth from +z towards +x below π, i.e. x > 0).
+        var masked = new BinaryObject(new Sphere(Point3D.Origin, 1), sr => sr.TextureCoordinates.u < 0.5);
+        var sr = new ShadingRecord(null);
+        // Coming from +x the front (x > 0) is kept.
+        Assert.True(masked.Hit(new Ray(new Point3D(5, 0.1, 0.2), new Vector3D(-1, 0, 0)), out double t, sr));
+        Assert.True(Math.Abs(t - (5 - Math.Sqrt(1 - 0.05))) < 1e-9);
+        // Coming from -x the front is cut away; the ray goes on to the kept back half.
+        Assert.True(masked.Hit(new Ray(new Point3D(-5, 0.1, 0.2), new Vector3D(1, 0, 0)), out t, sr));
+        Assert.True(Math.Abs(t - (5 + Math.Sqrt(1 - 0.05))) < 1e-9);
+        Assert.True(new Ray(new Point3D(-5, 0.1, 0.2), new Vector3D(1, 0, 0)).At(t).x > 0);
+    }
+}
