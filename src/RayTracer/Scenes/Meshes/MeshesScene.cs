@@ -48,6 +48,24 @@ public sealed class MeshesScene : SceneDescription
         return text.ToString();
     }
 
+    /// <summary>
+    /// The same mesh with every triangle wound so its geometric normal points away from the origin; shading
+    /// treats the normal side as the outside, so a closed mesh must be wound outwards.
+    /// </summary>
+    public static Mesh OutwardFacing(Mesh mesh)
+    {
+        var indices = (int[])mesh.Indices.Clone();
+        for (var i = 0; i + 2 < indices.Length; i += 3)
+        {
+            Point3D a = mesh.Vertices[indices[i]], b = mesh.Vertices[indices[i + 1]], c = mesh.Vertices[indices[i + 2]];
+            var normal = (b - a).Cross(c - a);
+            var centre = (a.ToVector() + b.ToVector() + c.ToVector()) / 3;
+            if (normal.Dot(centre) < 0)
+                (indices[i + 1], indices[i + 2]) = (indices[i + 2], indices[i + 1]);
+        }
+        return new Mesh(mesh.Vertices, indices);
+    }
+
     protected override void Populate(World world)
     {
         world.BackgroundColor = new RGBColor(0.12, 0.13, 0.16);
@@ -57,11 +75,11 @@ public sealed class MeshesScene : SceneDescription
             Material = MaterialFactory.Matte(TextureFactory.PlaneChecker(0.6, new RGBColor(0.8, 0.8, 0.8), new RGBColor(0.45, 0.45, 0.5))),
         });
 
-        var smooth = ThroughputReport.DisplacedSphere(Triangles);
+        var smooth = OutwardFacing(ThroughputReport.DisplacedSphere(Triangles));
         smooth.Material = MaterialFactory.Plastic(new RGBColor(0.9, 0.55, 0.2), 60);
         world.Add(new Instance(new Bvh(smooth.CreateTriangles(smooth: true))).Translate(-2.3, 0, 0));
 
-        var flat = ThroughputReport.DisplacedSphere(Triangles / 8);
+        var flat = OutwardFacing(ThroughputReport.DisplacedSphere(Triangles / 8));
         flat.Material = MaterialFactory.Plastic(new RGBColor(0.3, 0.6, 0.9), 60);
         world.Add(new RegularGrid(flat.CreateTriangles(smooth: false)));
 

@@ -61,7 +61,7 @@ public sealed class ImageTextureScene : SceneDescription
         world.Add(WithMaterial(new Instance(new OpenCylinder(-1, 1, 1)).Translate(0, 1, 0), MaterialFactory.Matte(cylindrical, 0.3, 0.8)));
 
         var rectangular = new ImageTexture(image, 2.2) { Mapping = new RectangularMapping() };
-        world.Add(WithMaterial(new Instance(new Rectangle(new Point3D(-1, 0, -1), new Vector3D(0, 0, 2), new Vector3D(2, 0, 0))).RotateZ(Math.PI / 2).Translate(2.6, 1.1, 0),
+        world.Add(WithMaterial(new Instance(new Rectangle(new Point3D(-1, 0, -1), new Vector3D(0, 0, 2), new Vector3D(2, 0, 0))).RotateX(Math.PI / 2).Translate(2.6, 1.1, 0),
             MaterialFactory.Matte(rectangular, 0.3, 0.8)));
 
         world.Add(LightFactory.Point(new Point3D(0, 6, 9), 1.2));

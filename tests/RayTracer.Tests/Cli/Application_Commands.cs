@@ -1,0 +1,101 @@
+using RayTracer.Cli;
+using RayTracer.Viewing.Imaging;
+
+namespace RayTracer.Tests.Cli;
+
+public sealed class Application_Commands : IDisposable
+{
+    private readonly string _dir = Path.Combine(Path.GetTempPath(), "raytracer-cli-" + Guid.NewGuid().ToString("N"));
+
+    public Application_Commands() => Directory.CreateDirectory(_dir);
+
+    public void Dispose() => Directory.Delete(_dir, true);
+
+    private static (int Code, string Out, string Err) Run(params string[] args)
+    {
+        var stdout = new StringWriter();
+        var stderr = new StringWriter();
+        var code = Application.Run(args, stdout, stderr);
+        return (code, stdout.ToString(), stderr.ToString());
+    }
+
+    [Fact]
+    public void List_shows_every_scene_with_a_description()
+    {
+        var (code, output, _) = Run("list");
+        Assert.Equal(0, code);
+        Assert.Contains("spheres", output);
+        Assert.Contains("path-tracing", output);
+        Assert.Contains("camera-stereo", output);
+    }
+
+    [Fact]
+    public void Render_writes_a_png_of_the_requested_size_and_a_summary()
+    {
+        var path = Path.Combine(_dir, "out.png");
+        var (code, _, err) = Run("render", "spheres", "-o", path, "--width", "16", "--height", "10", "--spp", "1", "--threads", "2");
+        Assert.Equal(0, code);
+        var image = PngDecoder.Load(path);
+        Assert.Equal(16, image.Width);
+        Assert.Equal(10, image.Height);
+        Assert.Contains("Mrays/s", err);
+        Assert.Contains("100%", err);
+    }
+
+    [Fact]
+    public void Render_output_depends_on_the_seed_only()
+    {
+        string Render(string name, string threads, string seed)
+        {
+            var path = Path.Combine(_dir, name);
+            Assert.Equal(0, Run("render", "light-area-disk", "-o", path, "--width", "12", "--height", "8", "--spp", "2", "--seed", seed, "--threads", threads).Code);
+            return Convert.ToBase64String(File.ReadAllBytes(path));
+        }
+        var one = Render("a.png", "1", "5");
+        Assert.Equal(one, Render("b.png", "2", "5"));
+        Assert.NotEqual(one, Render("c.png", "2", "6"));
+    }
+
+    [Theory]
+    [InlineData("render", "no-such-scene", "-o", "x.png")]
+    [InlineData("render", "spheres")]
+    [InlineData("render", "spheres", "-o", "x.jpg")]
+    [InlineData("render", "spheres", "-o", "x.png", "--width", "0")]
+    [InlineData("render", "spheres", "-o", "x.png", "--spp", "many")]
+    [InlineData("render", "spheres", "-o", "x.png", "--bogus", "1")]
+    [InlineData("render", "spheres", "-o", "x.png", "--width")]
+    [InlineData("render", "spheres", "-o", "x.png", "--width", "5", "--width", "6")]
+    [InlineData("render", "spheres", "extra", "-o", "x.png")]
+    [InlineData("paint")]
+    [InlineData("list", "extra")]
+    [InlineData("bench", "--triangles", "3")]
+    public void Bad_arguments_exit_with_2_a_message_and_no_output_file(params string[] args)
+    {
+        var cwd = Environment.CurrentDirectory;
+        var resolved = args.Select(a => a.EndsWith(".png") || a.EndsWith(".jpg") ? Path.Combine(_dir, a) : a).ToArray();
+        var (code, _, err) = Run(resolved);
+        Assert.Equal(2, code);
+        Assert.StartsWith("raytracer: error:", err);
+        Assert.Empty(Directory.GetFiles(_dir));
+        Assert.Equal(cwd, Environment.CurrentDirectory);
+    }
+
+    [Fact]
+    public void Unwritable_output_is_a_failure_not_a_crash()
+    {
+        var blocker = Path.Combine(_dir, "file");
+        File.WriteAllText(blocker, "");
+        var (code, _, err) = Run("render", "spheres", "-o", Path.Combine(blocker, "out.png"), "--width", "4", "--height", "4", "--spp", "1");
+        Assert.Equal(1, code);
+        Assert.Contains("cannot write", err);
+    }
+
+    [Fact]
+    public void Progress_bar_estimates_the_remaining_time()
+    {
+        var text = ProgressBar.Render(25, 100, TimeSpan.FromSeconds(10), 20);
+        Assert.Contains("25%", text);
+        Assert.Contains("ETA 00:30", text);
+        Assert.StartsWith("[#####...............]", text);
+    }
+}
