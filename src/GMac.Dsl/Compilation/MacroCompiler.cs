@@ -49,6 +49,24 @@ public sealed class MacroCompiler(CoreFrames frames)
     public IReadOnlyDictionary<VariableSymbol, Multivector<Scalar>> Compile(MacroSymbol macro,
         IReadOnlyDictionary<string, Scalar>? coefficientBindings = null) => Compile(macro, BindInputs(macro, coefficientBindings));
 
+    /// <summary>
+    /// <paramref name="relations"/> extended with ⟨A Ã⟩₀ = 1 for every input of a
+    /// <c>normalized</c> class, solved for the square of its scalar coefficient (w² for a
+    /// rotor), so that the simplifier can reduce e.g. w² + x² − y² − z² to 1 − 2(y² + z²).
+    /// </summary>
+    public static SideRelations NormalizationRelations(MacroSymbol macro,
+        IReadOnlyDictionary<VariableSymbol, Multivector<Scalar>> inputs, SideRelations relations)
+    {
+        foreach (var input in macro.Inputs.Where(i => i.Class is { IsNormalized: true }))
+        {
+            var value = inputs[input];
+            var pivot = value.Terms.Select(t => t.Coefficient).FirstOrDefault(c => c.Variables.Count == 1 && c.IsMonomial);
+            if (pivot is null) continue;
+            relations = relations.With(value.QuasiNorm(), Scalar.One, pivot * pivot);
+        }
+        return relations;
+    }
+
     private static Scalar ConstantValue(BoundExpression value) =>
         Folding.TryFold(value) is { } r ? Scalar.Constant(r)
         : throw new MacroEvaluationException(value.Span, "class constants must be exact numbers");

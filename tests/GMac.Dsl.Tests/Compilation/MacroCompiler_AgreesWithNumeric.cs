@@ -91,6 +91,22 @@ public sealed class MacroCompiler_AgreesWithNumeric
     }
 
     [Fact]
+    public void Normalized_rotor_gives_the_reduced_diagonal_of_equation_7_6()
+    {
+        var macro = Library.Value.Model.Macros["RotorToMatrix"];
+        var compiler = new MacroCompiler(new CoreFrames());
+        var inputs = compiler.BindInputs(macro);
+        var outputs = compiler.Compile(macro, inputs);
+        var relations = MacroCompiler.NormalizationRelations(macro, inputs, SideRelations.None);
+        var c1 = outputs.Single(o => o.Key.Name == "c1").Value;
+        // R = w + x e2^e3 + y e3^e1 + z e1^e2 (7.7): y is minus the e1^e3 coefficient.
+        var y = Scalar.Variable("r.e1_e3");
+        var z = Scalar.Variable("r.e1_e2");
+        var expected = Scalar.One - Scalar.Constant(2) * (y * y + z * z);
+        Assert.Equal(expected.ToString(), relations.Reduce(c1["e1"]).ToString());
+    }
+
+    [Fact]
     public void Circle_curve_matches_equation_6_5()
     {
         var macro = Library.Value.Model.Macros["CircleCurvePoint"];
