@@ -12,10 +12,17 @@ public readonly record struct Interval(double Lower, double Upper)
     public static Interval Everything { get; } = new(double.NegativeInfinity, double.PositiveInfinity);
     public static Interval NonNegative { get; } = new(0, double.PositiveInfinity);
 
+    /// <summary>The tightest double interval known to contain <paramref name="value"/>, keeping its sign.</summary>
     public static Interval Exactly(Rational value)
     {
         var d = value.ToDouble();
-        return Rational.FromDouble(d) == value ? new Interval(d, d) : new Interval(Math.BitDecrement(d), Math.BitIncrement(d));
+        if (double.IsFinite(d) && Rational.FromDouble(d) == value) return new Interval(d, d);
+        // The conversion may be off by more than one ulp (two roundings and a division), so widen by two.
+        var lower = double.IsFinite(d) ? Math.BitDecrement(Math.BitDecrement(d)) : d > 0 ? double.MaxValue : double.NegativeInfinity;
+        var upper = double.IsFinite(d) ? Math.BitIncrement(Math.BitIncrement(d)) : d > 0 ? double.PositiveInfinity : -double.MaxValue;
+        if (value.Sign > 0) lower = Math.Max(lower, 0);
+        if (value.Sign < 0) upper = Math.Min(upper, 0);
+        return new Interval(lower, upper);
     }
 
     public bool IsNonNegative => Lower >= 0;
