@@ -1,0 +1,109 @@
+using System.Text;
+using RayTracer.Geometry.Meshes;
+
+namespace RayTracer.Tests.Geometry.Meshes;
+
+public class MeshFiles_Malformed
+{
+    private static MeshFormatException ReadPly(string text) =>
+        Assert.Throws<MeshFormatException>(() => PlyReader.Read(new MemoryStream(Encoding.ASCII.GetBytes(text)), "bad.ply"));
+
+    private const string Header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+
+    [Fact]
+    public void MissingMagicIsReportedOnLineOne()
+    {
+        MeshFormatException e = ReadPly("plx\nformat ascii 1.0\n");
+        Assert.Equal(1, e.Line);
+        Assert.Equal("bad.ply", e.FileName);
+        Assert.StartsWith("bad.ply(1):", e.Message);
+    }
+
+    [Fact]
+    public void UnknownPropertyTypeIsReportedOnItsLine()
+    {
+        MeshFormatException e = ReadPly("ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n");
+        Assert.Equal(4, e.Line);
+        Assert.Contains("quad", e.Message);
+    }
+
+    [Fact]
+    public void BadNumberInTheBodyNamesItsLine()
+    {
+        MeshFormatException e = ReadPly(Header + "0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n");
+        Assert.Equal(11, e.Line);
+        Assert.Contains("zero", e.Message);
+    }
+
+    [Fact]
+    public void OutOfRangeIndexIsRejected()
+    {
+        MeshFormatException e = ReadPly(Header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n");
+        Assert.Equal(13, e.Line);
+        Assert.Contains("vertex 3", e.Message);
+    }
+
+    [Fact]
+    public void TruncatedAsciiBodyIsReported()
+    {
+        MeshFormatException e = ReadPly(Header + "0 0 0\n1 0 0\n0 1");
+        Assert.Contains("ends inside vertex 2", e.Message);
+    }
+
+    [Fact]
+    public void MissingEndHeaderIsReported()
+    {
+        MeshFormatException e = ReadPly("ply\nformat ascii 1.0\nelement vertex 0\n");
+        Assert.Contains("end_header", e.Message);
+    }
+
+    [Fact]
+    public void TruncatedBinaryPlyGivesTheByteOffset()
+    {
+        using var stream = new MemoryStream();
+        PlyWriter.Write(MeshSamples.Octahedron(false), stream, PlyFormat.BinaryLittleEndian);
+        byte[] bytes = stream.ToArray();
+        int headerLength = Encoding.ASCII.GetString(bytes).IndexOf("end_header\n", StringComparison.Ordinal) + "end_header\n".Length;
+        // Cut inside the z coordinate of vertex 2: 2 vertices of 24 bytes, plus 16 bytes, plus 3 more.
+        int cut = headerLength + 2 * 24 + 16 + 3;
+        var e = Assert.Throws<MeshFormatException>(() => PlyReader.Read(new MemoryStream(bytes[..cut]), "cut.ply"));
+        Assert.Equal(cut, e.ByteOffset);
+        Assert.Contains("vertex 2", e.Message);
+        Assert.Null(e.Line);
+    }
+
+    [Fact]
+    public void TruncatedBinaryStlGivesTheByteOffsetAndTriangle()
+    {
+        using var stream = new MemoryStream();
+        StlWriter.Write(MeshSamples.FloatExactSoup(10, 1), stream, StlFormat.Binary);
+        byte[] bytes = stream.ToArray()[..(84 + 50 * 6 + 20)];
+        var e = Assert.Throws<MeshFormatException>(() => StlReader.Read(new MemoryStream(bytes), "cut.stl"));
+        Assert.Equal(bytes.Length, e.ByteOffset);
+        Assert.Contains("triangle 6", e.Message);
+    }
+
+    [Fact]
+    public void MalformedAsciiStlNamesTheLine()
+    {
+        const string text = "solid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 0 1 oops\n  endloop\n endfacet\nendsolid x\n";
+        var e = Assert.Throws<MeshFormatException>(() => StlReader.Read(new MemoryStream(Encoding.ASCII.GetBytes(text)), "bad.stl"));
+        Assert.Equal(6, e.Line);
+        Assert.Contains("oops", e.Message);
+    }
+
+    [Fact]
+    public void AsciiStlWithoutEndsolidIsReported()
+    {
+        const string text = "solid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n  endloop\n endfacet\n";
+        var e = Assert.Throws<MeshFormatException>(() => StlReader.Read(new MemoryStream(Encoding.ASCII.GetBytes(text)), "bad.stl"));
+        Assert.Contains("end of file", e.Message);
+    }
+
+    [Fact]
+    public void GarbageThatIsNeitherFormatIsRejected()
+    {
+        var e = Assert.Throws<MeshFormatException>(() => StlReader.Read(new MemoryStream(new byte[40]), "tiny.stl"));
+        Assert.Equal("tiny.stl", e.FileName);
+    }
+}

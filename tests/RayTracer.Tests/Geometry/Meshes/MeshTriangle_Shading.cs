@@ -1,0 +1,50 @@
+using RayTracer.Geometry.Meshes;
+using RayTracer.Util;
+
+namespace RayTracer.Tests.Geometry.Meshes;
+
+public class MeshTriangle_Shading
+{
+    [Fact]
+    public void FlatTrianglesUseTheFaceNormalAndSmoothOnesInterpolate()
+    {
+        Mesh mesh = MeshSamples.Octahedron(true);
+        MeshTriangle flat = mesh.CreateTriangles(smooth: false)[0]; // (1,0,0), (0,1,0), (0,0,1)
+        MeshTriangle smooth = mesh.CreateTriangles(smooth: true)[0];
+        var sr = new ShadingRecord(null);
+        var centre = new Point3D(1.0 / 3, 1.0 / 3, 1.0 / 3);
+        var ray = new Ray(new Point3D(2, 2, 2), centre - new Point3D(2, 2, 2));
+
+        Assert.True(flat.Hit(ray, out double t, sr));
+        Assert.Equal(1, t, 12);
+        Normal3D face = new Normal3D(1, 1, 1).Normalized();
+        Assert.True((sr.Normal - face).Length < 1e-12);
+
+        // Near a corner the smooth normal approaches that vertex's normal.
+        var nearCorner = new Point3D(0.98, 0.01, 0.01);
+        Assert.True(smooth.Hit(new Ray(nearCorner + new Vector3D(1, 1, 1), new Vector3D(-1, -1, -1)), out _, sr));
+        Assert.True(sr.Normal.x > 0.99, $"{sr.Normal}");
+        // Texture coordinates interpolate the vertex (u, v): vertices 0, 2, 4 have u = 0, 0.4, 0.8.
+        Assert.Equal(0.98 * 0 + 0.01 * 0.4 + 0.01 * 0.8, sr.TextureCoordinates.u, 9);
+    }
+
+    [Fact]
+    public void ComputedVertexNormalsOfTheOctahedronPointAlongTheVertices()
+    {
+        Mesh mesh = MeshSamples.Octahedron(false);
+        mesh.ComputeVertexNormals();
+        for (int i = 0; i < mesh.Vertices.Length; i++)
+        {
+            Point3D v = mesh.Vertices[i];
+            Assert.True((mesh.Normals![i] - new Normal3D(v.x, v.y, v.z)).Length < 1e-12);
+        }
+    }
+
+    [Fact]
+    public void MeshRejectsIndicesOutsideItsVertices()
+    {
+        Mesh mesh = MeshSamples.Octahedron(false);
+        Assert.Throws<ArgumentException>(() => new Mesh(mesh.Vertices, [0, 1, 9]));
+        Assert.Throws<ArgumentException>(() => new Mesh(mesh.Vertices, [0, 1]));
+    }
+}
