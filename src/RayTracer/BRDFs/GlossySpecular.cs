@@ -12,32 +12,41 @@ public sealed class GlossySpecular : BRDF
 {
     private Sampler? _sampler;
 
+    private double _exponent;
+
     public GlossySpecular(double ks = 0.5, double exponent = 20, RGBColor? cs = null)
     {
         Ks = ks;
-        Exponent = exponent;
+        _exponent = exponent;
         Color = new ConstantTexture<RGBColor>(cs ?? RGBColor.White);
     }
 
     public double Ks { get; set; }
-    public double Exponent { get; set; }
     public Texture<RGBColor> Color { get; set; }
 
-    public Sampler Sampler
+    /// <summary>Phong exponent; changing it re-maps the sampler's hemisphere samples (do it before rendering).</summary>
+    public double Exponent
     {
-        get
-        {
-            if (_sampler is null || _sampler.HemisphereExponent != Exponent)
-            {
-                var s = _sampler ?? new MultiJitteredSampler(64);
-                s.MapSamplesToHemisphere(Exponent);
-                _sampler = s;
-            }
-            return _sampler;
-        }
+        get => _exponent;
         set
         {
-            value.MapSamplesToHemisphere(Exponent);
+            _exponent = value;
+            _sampler?.MapSamplesToHemisphere(value);
+        }
+    }
+
+    /// <summary>Sampler of the reflection lobe; a multi-jittered one is created on first use if none is set.</summary>
+    public Sampler Sampler
+    {
+        get => LazyInitializer.EnsureInitialized(ref _sampler, () =>
+        {
+            var s = new MultiJitteredSampler(64);
+            s.MapSamplesToHemisphere(_exponent);
+            return s;
+        });
+        set
+        {
+            value.MapSamplesToHemisphere(_exponent);
             _sampler = value;
         }
     }

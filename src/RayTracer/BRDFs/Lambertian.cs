@@ -30,7 +30,7 @@ public sealed class Lambertian : BRDF
     /// <summary>Sampler for indirect bounces; a multi-jittered one is created on first use if none is set.</summary>
     public Sampler Sampler
     {
-        get => _sampler ??= CreateDefaultSampler();
+        get => LazyInitializer.EnsureInitialized(ref _sampler, CreateDefaultSampler); // one instance even if threads race
         set
         {
             value.MapSamplesToHemisphere(1);

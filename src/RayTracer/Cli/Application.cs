@@ -3,7 +3,6 @@ using RayTracer.Acceleration;
 using RayTracer.Factories;
 using RayTracer.Scenes;
 using RayTracer.Viewing;
-using RayTracer.Viewing.Imaging;
 
 namespace RayTracer.Cli;
 
@@ -107,7 +106,7 @@ public static class Application
         }
         try
         {
-            PngEncoder.Save(result.Image.ToImage(world.ViewPlane), output);
+            world.ViewPlane.SaveImage(result.Image, output);
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {

@@ -25,7 +25,7 @@ public static class LightFactory
         shape.Material = emitter;
         shape.CastsShadows = false;
         world.Add(shape);
-        var light = new AreaLight(shape, emitter);
+        var light = new AreaLight(shape, emitter, new MultiJitteredSampler(world.ViewPlane.NumSamples));
         world.Add(light);
         return light;
     }

@@ -1,5 +1,6 @@
 using RayTracer.Geometry;
 using RayTracer.Materials;
+using RayTracer.Sampling;
 using RayTracer.Util;
 
 namespace RayTracer.Lights;
@@ -19,10 +20,13 @@ public sealed class AreaLight : Light
 
     private readonly ThreadLocal<LightSample> _sample = new(() => new LightSample());
 
-    public AreaLight(GeometricObject shape, Material emitter)
+    /// <param name="sampler">Optional stratified sampler for points on the shape (it becomes the shape's sample source).</param>
+    public AreaLight(GeometricObject shape, Material emitter, Sampler? sampler = null)
     {
         Shape = shape;
         Emitter = emitter;
+        if (sampler is not null)
+            shape.UnitSquareSamples = sampler.SampleUnitSquare;
     }
 
     public GeometricObject Shape { get; }

@@ -16,16 +16,20 @@ public class Matte : Material
     {
         AmbientBrdf = new Lambertian(ka, color);
         DiffuseBrdf = new Lambertian(kd, color);
+        _diffuseF = DiffuseBrdf.F;
     }
+
+    // Cached so shading does not allocate a delegate per hit.
+    private readonly Func<ShadingRecord, Vector3D, Vector3D, RGBColor> _diffuseF;
 
     public Lambertian AmbientBrdf { get; }
     public Lambertian DiffuseBrdf { get; }
 
     public override RGBColor Shade(ShadingRecord sr) =>
-        Ambient(sr, AmbientBrdf.Rho(sr, default)) + DirectLighting(sr, DiffuseBrdf.F, sampledLights: false);
+        Ambient(sr, AmbientBrdf.Rho(sr, default)) + DirectLighting(sr, _diffuseF, sampledLights: false);
 
     public override RGBColor AreaLightShade(ShadingRecord sr) =>
-        Ambient(sr, AmbientBrdf.Rho(sr, default)) + DirectLighting(sr, DiffuseBrdf.F, sampledLights: true);
+        Ambient(sr, AmbientBrdf.Rho(sr, default)) + DirectLighting(sr, _diffuseF, sampledLights: true);
 
     public override RGBColor PathShade(ShadingRecord sr) => IndirectBounce(sr);
 

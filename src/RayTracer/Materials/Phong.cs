@@ -17,7 +17,11 @@ public class Phong : Material
         AmbientBrdf = new Lambertian(ka, color);
         DiffuseBrdf = new Lambertian(kd, color);
         SpecularBrdf = new GlossySpecular(ks, exponent, cs ?? RGBColor.White);
+        _f = DiffusePlusSpecular;
     }
+
+    // Cached so shading does not allocate a delegate per hit.
+    private readonly Func<ShadingRecord, Vector3D, Vector3D, RGBColor> _f;
 
     public Lambertian AmbientBrdf { get; }
     public Lambertian DiffuseBrdf { get; }
@@ -27,10 +31,10 @@ public class Phong : Material
         DiffuseBrdf.F(sr, wo, wi) + SpecularBrdf.F(sr, wo, wi);
 
     public override RGBColor Shade(ShadingRecord sr) =>
-        Ambient(sr, AmbientBrdf.Rho(sr, default)) + DirectLighting(sr, DiffusePlusSpecular, sampledLights: false);
+        Ambient(sr, AmbientBrdf.Rho(sr, default)) + DirectLighting(sr, _f, sampledLights: false);
 
     public override RGBColor AreaLightShade(ShadingRecord sr) =>
-        Ambient(sr, AmbientBrdf.Rho(sr, default)) + DirectLighting(sr, DiffusePlusSpecular, sampledLights: true);
+        Ambient(sr, AmbientBrdf.Rho(sr, default)) + DirectLighting(sr, _f, sampledLights: true);
 
     /// <summary>Diffuse bounce only; the highlight is a direct-lighting effect.</summary>
     public override RGBColor PathShade(ShadingRecord sr)

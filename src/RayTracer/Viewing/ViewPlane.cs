@@ -1,4 +1,5 @@
 using RayTracer.Sampling;
+using RayTracer.Viewing.Imaging;
 
 namespace RayTracer.Viewing;
 
@@ -40,6 +41,9 @@ public sealed class ViewPlane
     public Sampler Sampler { get; set; } = new RegularSampler(1);
 
     public int NumSamples => Sampler.NumSamples;
+
+    /// <summary>Tone maps (gamut mapping, gamma) and writes the image as PNG, atomically.</summary>
+    public void SaveImage(FrameBuffer image, string path) => PngEncoder.Save(image.ToImage(this), path);
 
     /// <summary>Multi-jittered sampling with <paramref name="samples"/> per pixel (a single sample is the pixel centre).</summary>
     public void SetSamples(int samples) =>

@@ -91,6 +91,15 @@ public sealed class Application_Commands : IDisposable
     }
 
     [Fact]
+    public void Bench_reports_every_acceleration_structure()
+    {
+        var (code, output, _) = Run("bench", "--triangles", "200", "--width", "8", "--height", "6", "--threads", "1");
+        Assert.Equal(0, code);
+        Assert.Contains("BVH", output);
+        Assert.Contains("Mrays/s", output);
+    }
+
+    [Fact]
     public void Progress_bar_estimates_the_remaining_time()
     {
         var text = ProgressBar.Render(25, 100, TimeSpan.FromSeconds(10), 20);
