@@ -1,4 +1,6 @@
 using Antlr4.Runtime;
+using Antlr4.Runtime.Atn;
+using Antlr4.Runtime.Misc;
 using GMac.Dsl.Diagnostics;
 using GMac.Dsl.Syntax.Generated;
 
@@ -48,10 +50,26 @@ public sealed class SyntaxTree
             return new SyntaxTree(filePath, text, null, bag.Items);
         }
 
+        // Two-stage parse: the fast SLL prediction almost always suffices; only when it
+        // fails is the file parsed again with full LL prediction and error recovery.
         var parser = new GMacDslParser(tokens);
         parser.RemoveErrorListeners();
-        parser.AddErrorListener(collector);
-        var root = parser.compilationUnit();
+        parser.Interpreter.PredictionMode = PredictionMode.SLL;
+        parser.ErrorHandler = new BailErrorStrategy();
+        GMacDslParser.CompilationUnitContext root;
+        try
+        {
+            root = parser.compilationUnit();
+        }
+        catch (ParseCanceledException)
+        {
+            tokens.Seek(0);
+            parser.Reset();
+            parser.AddErrorListener(collector);
+            parser.ErrorHandler = new DefaultErrorStrategy();
+            parser.Interpreter.PredictionMode = PredictionMode.LL;
+            root = parser.compilationUnit();
+        }
         return new SyntaxTree(filePath, text, root, bag.Items);
     }
 
