@@ -90,44 +90,66 @@ public static class ThroughputReport
     }
 
     /// <summary>
-    /// Latitude–longitude sphere of at least <paramref name="triangles"/> triangles whose radius is
-    /// modulated by a smooth bump pattern, so the surface is not trivially convex.
+    /// Closed latitude–longitude sphere of at least <paramref name="triangles"/> triangles (single
+    /// vertices at the poles) whose radius is modulated by a smooth bump pattern, so the surface is
+    /// not trivially convex.
     /// </summary>
     public static Mesh DisplacedSphere(int triangles)
     {
-        // 2 · rings · segments triangles with segments = 2 · rings.
-        int rings = (int)Math.Ceiling(Math.Sqrt(triangles / 4.0));
+        // segments = 2 · rings gives 2 · segments · (rings - 1) = 4 rings (rings - 1) triangles.
+        int rings = Math.Max(2, (int)Math.Ceiling((1 + Math.Sqrt(1 + triangles)) / 2));
+        while (4L * rings * (rings - 1) < triangles)
+        {
+            rings++;
+        }
+
         int segments = 2 * rings;
-        var vertices = new Point3D[(rings + 1) * segments];
-        for (int i = 0; i <= rings; i++)
+        var vertices = new Point3D[2 + (rings - 1) * segments];
+        vertices[0] = new Point3D(0, Radius(0, 0), 0);
+        vertices[^1] = new Point3D(0, -Radius(Math.PI, 0), 0);
+        for (int i = 1; i < rings; i++)
         {
             double theta = Math.PI * i / rings;
             for (int j = 0; j < segments; j++)
             {
                 double phi = MathConstants.TwoPi * j / segments;
-                double r = 1 + 0.06 * Math.Sin(7 * theta) * Math.Cos(9 * phi) + 0.02 * Math.Sin(23 * theta + 3 * phi);
-                vertices[i * segments + j] = new Point3D(
+                double r = Radius(theta, phi);
+                vertices[Ring(i, j, segments)] = new Point3D(
                     r * Math.Sin(theta) * Math.Cos(phi), r * Math.Cos(theta), r * Math.Sin(theta) * Math.Sin(phi));
             }
         }
 
-        var indices = new int[6 * rings * segments];
-        int k = 0;
-        for (int i = 0; i < rings; i++)
+        var indices = new int[6 * segments * (rings - 1)];
+        int k = 0, south = vertices.Length - 1;
+        for (int j = 0; j < segments; j++)
         {
-            for (int j = 0; j < segments; j++)
+            int next = (j + 1) % segments;
+            // Polar fans, wound so that the normals (v1 - v0) × (v2 - v0) point outward.
+            indices[k++] = 0;
+            indices[k++] = Ring(1, next, segments);
+            indices[k++] = Ring(1, j, segments);
+            indices[k++] = south;
+            indices[k++] = Ring(rings - 1, j, segments);
+            indices[k++] = Ring(rings - 1, next, segments);
+            for (int i = 1; i < rings - 1; i++)
             {
-                int a = i * segments + j, b = i * segments + (j + 1) % segments;
-                int c = a + segments, d = b + segments;
+                int a = Ring(i, j, segments), b = Ring(i, next, segments);
+                int c = Ring(i + 1, j, segments), d = Ring(i + 1, next, segments);
                 indices[k++] = a;
-                indices[k++] = c;
-                indices[k++] = b;
                 indices[k++] = b;
                 indices[k++] = c;
+                indices[k++] = b;
                 indices[k++] = d;
+                indices[k++] = c;
             }
         }
 
         return new Mesh(vertices, indices);
     }
+
+    private static int Ring(int ring, int segment, int segments) => 1 + (ring - 1) * segments + segment;
+
+    // The bumps vanish towards the poles (factor sin θ), so the pole vertices are well defined.
+    private static double Radius(double theta, double phi) =>
+        1 + Math.Sin(theta) * (0.06 * Math.Sin(7 * theta) * Math.Cos(9 * phi) + 0.02 * Math.Sin(23 * theta + 3 * phi));
 }

@@ -1,0 +1,199 @@
+using RayTracer.Acceleration;
+using RayTracer.Geometry;
+using RayTracer.Geometry.Meshes;
+using RayTracer.Geometry.Universal;
+using RayTracer.Util;
+
+namespace RayTracer.Tests.Acceleration;
+
+public class AccelerationStructures_AgreeWithBruteForce
+{
+    public static TheoryData<string> Kinds => ["grid", "bih", "bvh"];
+
+    private static AccelerationStructure Build(string kind, IReadOnlyList<GeometricObject> objects) => kind switch
+    {
+        "grid" => new RegularGrid(objects),
+        "bih" => new BoundingIntervalHierarchy(objects),
+        _ => new Bvh(objects),
+    };
+
+    /// <summary>Random triangles of varied size (stand-alone and from a mesh) plus random spheres.</summary>
+    private static List<GeometricObject> RandomScene(ulong seed, int triangles, int spheres, bool withPlane = false)
+    {
+        var random = new SeededRandom(seed);
+        var objects = new List<GeometricObject>();
+        Point3D RandomPoint(double r) => new(random.NextDouble(-r, r), random.NextDouble(-r, r), random.NextDouble(-r, r));
+
+        var vertices = new Point3D[3 * triangles];
+        for (int i = 0; i < triangles; i++)
+        {
+            Point3D c = RandomPoint(10);
+            double size = random.NextDouble() < 0.1 ? 4 : 0.6;
+            for (int k = 0; k < 3; k++)
+            {
+                vertices[3 * i + k] = c + (RandomPoint(size) - Point3D.Origin);
+            }
+        }
+
+        var mesh = new Mesh(vertices, [.. Enumerable.Range(0, vertices.Length)]);
+        MeshTriangle[] meshTriangles = mesh.CreateTriangles(smooth: false);
+        for (int i = 0; i < triangles; i++)
+        {
+            // Half as mesh triangles, half as stand-alone triangles: both take the packed fast path.
+            objects.Add(i % 2 == 0 ? meshTriangles[i] : new Triangle(vertices[3 * i], vertices[3 * i + 1], vertices[3 * i + 2]));
+        }
+
+        for (int i = 0; i < spheres; i++)
+        {
+            objects.Add(new Sphere(RandomPoint(10), random.NextDouble(0.1, 1.5)));
+        }
+
+        if (withPlane)
+        {
+            objects.Add(new Plane(new Point3D(0, -12, 0), new Normal3D(0, 1, 0)));
+        }
+
+        return objects;
+    }
+
+    private static (double T, int Index) BruteForce(IReadOnlyList<GeometricObject> objects, in Ray ray)
+    {
+        double best = double.PositiveInfinity;
+        int index = -1;
+        for (int i = 0; i < objects.Count; i++)
+        {
+            if (objects[i].Intersect(ray, out double t) && t < best)
+            {
+                best = t;
+                index = i;
+            }
+        }
+
+        return (best, index);
+    }
+
+    private static Ray RandomRay(SeededRandom random, bool fromInside)
+    {
+        double r = fromInside ? 9 : 30;
+        var origin = new Point3D(random.NextDouble(-r, r), random.NextDouble(-r, r), random.NextDouble(-r, r));
+        var target = new Point3D(random.NextDouble(-10, 10), random.NextDouble(-10, 10), random.NextDouble(-10, 10));
+        return new Ray(origin, target - origin);
+    }
+
+    [Theory]
+    [MemberData(nameof(Kinds))]
+    public void NearestHitMatchesBruteForce(string kind)
+    {
+        List<GeometricObject> objects = RandomScene(100, 1500, 60, withPlane: true);
+        AccelerationStructure structure = Build(kind, objects);
+        var random = new SeededRandom(200);
+        int hits = 0;
+        for (int n = 0; n < 4000; n++)
+        {
+            Ray ray = RandomRay(random, fromInside: n % 2 == 0);
+            var (tExpected, expected) = BruteForce(objects, ray);
+            bool hit = structure.IntersectNearest(ray, double.PositiveInfinity, out double t, out int primitive);
+            Assert.Equal(expected >= 0, hit);
+            if (!hit)
+            {
+                continue;
+            }
+
+            hits++;
+            Assert.Equal(tExpected, t);
+            // Identical t means the same surface unless two objects are hit at exactly the same point.
+            GeometricObject found = structure.GetPrimitive(primitive);
+            Assert.True(ReferenceEquals(found, objects[expected]) || (found.Intersect(ray, out double tf) && tf == tExpected));
+        }
+
+        Assert.True(hits > 1000, $"only {hits} hits");
+    }
+
+    [Theory]
+    [MemberData(nameof(Kinds))]
+    public void AxisAlignedRaysMatchBruteForce(string kind)
+    {
+        // Zero direction components exercise the infinite reciprocals in every traversal.
+        List<GeometricObject> objects = RandomScene(101, 800, 40);
+        AccelerationStructure structure = Build(kind, objects);
+        var random = new SeededRandom(201);
+        for (int n = 0; n < 1500; n++)
+        {
+            var origin = new Point3D(random.NextDouble(-12, 12), random.NextDouble(-12, 12), random.NextDouble(-12, 12));
+            int axis = n % 3;
+            double sign = random.NextDouble() < 0.5 ? -1 : 1;
+            var d = new Vector3D(axis == 0 ? sign : 0, axis == 1 ? sign : 0, axis == 2 ? sign : 0);
+            var ray = new Ray(origin, d);
+            var (tExpected, expected) = BruteForce(objects, ray);
+            bool hit = structure.IntersectNearest(ray, double.PositiveInfinity, out double t, out _);
+            Assert.Equal(expected >= 0, hit);
+            if (hit)
+            {
+                Assert.Equal(tExpected, t);
+            }
+        }
+    }
+
+    [Theory]
+    [MemberData(nameof(Kinds))]
+    public void AnyHitAgreesWithBruteForceWithinTheDistance(string kind)
+    {
+        List<GeometricObject> objects = RandomScene(102, 1000, 40, withPlane: true);
+        AccelerationStructure structure = Build(kind, objects);
+        var random = new SeededRandom(202);
+        for (int n = 0; n < 3000; n++)
+        {
+            Ray ray = RandomRay(random, fromInside: true);
+            double maxDistance = random.NextDouble(0.05, 1.5);
+            var (tExpected, _) = BruteForce(objects, ray);
+            Assert.Equal(tExpected < maxDistance, structure.IntersectAny(ray, maxDistance));
+            Assert.Equal(tExpected < maxDistance, structure.Occludes(ray, maxDistance));
+        }
+    }
+
+    [Theory]
+    [MemberData(nameof(Kinds))]
+    public void HitFillsTheShadingRecordOfTheNearestPrimitive(string kind)
+    {
+        List<GeometricObject> objects = RandomScene(103, 300, 30);
+        AccelerationStructure structure = Build(kind, objects);
+        var random = new SeededRandom(203);
+        var viaStructure = new ShadingRecord(null);
+        var direct = new ShadingRecord(null);
+        for (int n = 0; n < 1000; n++)
+        {
+            Ray ray = RandomRay(random, fromInside: false);
+            var (tExpected, expected) = BruteForce(objects, ray);
+            bool hit = structure.Hit(ray, out double t, viaStructure);
+            Assert.Equal(expected >= 0, hit);
+            if (hit)
+            {
+                Assert.True(objects[expected].Hit(ray, out _, direct));
+                Assert.Equal(tExpected, t);
+                Assert.Equal(direct.Normal, viaStructure.Normal);
+            }
+        }
+    }
+
+    [Theory]
+    [MemberData(nameof(Kinds))]
+    public void EmptyAndDegenerateScenesAreHandled(string kind)
+    {
+        var ray = new Ray(new Point3D(0, 0, 5), new Vector3D(0, 0, -1));
+        Assert.False(Build(kind, []).IntersectNearest(ray, double.PositiveInfinity, out _, out _));
+
+        // All triangles in one plane (a flat bounding box) and many identical ones.
+        var flat = new List<GeometricObject>();
+        for (int i = 0; i < 50; i++)
+        {
+            flat.Add(new Triangle(new Point3D(-1, -1, 0), new Point3D(1, -1, 0), new Point3D(0, 1, 0)));
+            flat.Add(new Triangle(new Point3D(i, 0, 0), new Point3D(i + 1, 0, 0), new Point3D(i, 1, 0)));
+        }
+
+        AccelerationStructure structure = Build(kind, flat);
+        Assert.True(structure.IntersectNearest(ray, double.PositiveInfinity, out double t, out _));
+        Assert.Equal(5, t, 12);
+        Assert.True(structure.IntersectNearest(new Ray(new Point3D(30.2, 0.3, -4), new Vector3D(0, 0, 1)), double.PositiveInfinity, out t, out _));
+        Assert.Equal(4, t, 12);
+    }
+}

@@ -1,0 +1,75 @@
+using RayTracer.Acceleration;
+using RayTracer.Geometry.Meshes;
+using RayTracer.Util;
+
+namespace RayTracer.Tests.Acceleration;
+
+public class ThroughputReport_Output
+{
+    [Fact]
+    public void ProceduralMeshHasAtLeastTheRequestedTrianglesAndIsClosed()
+    {
+        Mesh mesh = ThroughputReport.DisplacedSphere(5000);
+        Assert.InRange(mesh.TriangleCount, 5000, 5000 * 1.1);
+        // Every edge of a closed mesh is shared by exactly two triangles (pole fans included).
+        var edges = new Dictionary<(int, int), int>();
+        for (int f = 0; f < mesh.TriangleCount; f++)
+        {
+            for (int k = 0; k < 3; k++)
+            {
+                int a = mesh.Indices[3 * f + k], b = mesh.Indices[3 * f + (k + 1) % 3];
+                var key = (Math.Min(a, b), Math.Max(a, b));
+                edges[key] = edges.GetValueOrDefault(key) + 1;
+            }
+        }
+
+        Assert.All(edges.Values, c => Assert.Equal(2, c));
+
+        // Outward winding: each face normal points away from the centre.
+        for (int f = 0; f < mesh.TriangleCount; f++)
+        {
+            Point3D a = mesh.Vertices[mesh.Indices[3 * f]], b = mesh.Vertices[mesh.Indices[3 * f + 1]], c = mesh.Vertices[mesh.Indices[3 * f + 2]];
+            Vector3D n = Vector3D.Cross(b - a, c - a);
+            Assert.True(Vector3D.Dot(n, a - Point3D.Origin) > 0, $"face {f} points inward");
+        }
+    }
+
+    [Fact]
+    public void ReportNamesEveryStructureAndTheirHitCountsAgree()
+    {
+        var output = new StringWriter();
+        ThroughputReport.Run(output, 2000, 32, 24, 2);
+        string[] lines = output.ToString().Split('\n', StringSplitOptions.RemoveEmptyEntries);
+        string[] rows = [.. lines.Where(l => l.Contains("Mrays/s", StringComparison.Ordinal))];
+        Assert.Equal(3, rows.Length);
+        Assert.Contains(rows, r => r.StartsWith("regular grid", StringComparison.Ordinal));
+        Assert.Contains(rows, r => r.StartsWith("BIH", StringComparison.Ordinal));
+        Assert.Contains(rows, r => r.StartsWith("SAH BVH", StringComparison.Ordinal));
+        string[] hitCounts = [.. rows.Select(r => r[(r.LastIndexOf("hits", StringComparison.Ordinal) + 4)..].Trim())];
+        Assert.All(hitCounts, h => Assert.Equal(hitCounts[0], h));
+        Assert.NotEqual("0", hitCounts[0]);
+    }
+
+    [Fact]
+    public void PrimaryRaysHitTheSphereWhereTheCameraSeesIt()
+    {
+        // Brute force over a small mesh: the count of rays hitting it must match the structure's.
+        Mesh mesh = ThroughputReport.DisplacedSphere(600);
+        MeshTriangle[] triangles = mesh.CreateTriangles(false);
+        var bvh = new Bvh(triangles);
+        long viaBvh = ThroughputReport.CastPrimaryRays(bvh, 20, 15, 1);
+        long brute = 0;
+        double halfHeight = Math.Tan(0.5 * MathConstants.ToRadians(45)), halfWidth = halfHeight * 20 / 15;
+        for (int row = 0; row < 15; row++)
+        {
+            for (int col = 0; col < 20; col++)
+            {
+                var ray = new Ray(new Point3D(0, 0, 3.2), new Vector3D(halfWidth * (2 * (col + 0.5) / 20 - 1), halfHeight * (1 - 2 * (row + 0.5) / 15), -1));
+                brute += triangles.Any(t => t.Intersect(ray, out _)) ? 1 : 0;
+            }
+        }
+
+        Assert.Equal(brute, viaBvh);
+        Assert.True(brute > 50);
+    }
+}
