@@ -39,6 +39,7 @@ public static class SceneFactory
         () => new GlossyScene(),
         () => new TransparentScene(),
         () => new DielectricScene(),
+        () => new EmissiveScene(),
         () => new CornellBoxScene(),
         () => new GlobalIlluminationScene(),
         () => new CheckersScene(),

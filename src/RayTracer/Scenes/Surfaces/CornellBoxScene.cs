@@ -38,7 +38,8 @@ public class CornellBoxScene : SceneDescription
         world.Add(WithMaterial(new Instance(new Box(new Point3D(-0.75, 0, -0.75), new Point3D(0.75, 1.5, 0.75))).RotateY(-0.3).Translate(3.4, 0, 3.2), white));
         var panel = new Rectangle(new Point3D(1.75, s - 1e-3, 1.75), new Vector3D(1.5, 0, 0), new Vector3D(0, 0, 1.5), new Normal3D(0, -1, 0));
         LightFactory.AddAreaLight(world, panel, 18.0, new RGBColor(1, 0.9, 0.75));
-        world.Camera = CameraFactory.Pinhole(new Point3D(s / 2, s / 2, s + 8.5), new Point3D(s / 2, s / 2, 0), 36, world.ViewPlane);
+        // From 10 units in front of the opening a 28° view just fits the box's front edges.
+        world.Camera = CameraFactory.Pinhole(new Point3D(s / 2, s / 2, s + 10), new Point3D(s / 2, s / 2, 0), 28, world.ViewPlane);
         world.Tracer = CreateTracer(world);
     }
 }
