@@ -52,9 +52,10 @@ internal sealed partial class Binder
         if (_resolved.Contains(frame)) return;
         if (!_resolving.Add(frame))
         {
-            _diagnostics.ReportDefinitionCycle(frame.Declaration, "frame", frame.Name);
+            _diagnostics.ReportDefinitionCycle(frame.Declaration, "frame", CyclePath(frame));
             return;
         }
+        _resolvingPath.Add(frame);
         var saved = _file;
         var (body, file) = _frameBodies[frame];
         _file = file;
@@ -148,9 +149,13 @@ internal sealed partial class Binder
             }
         }
         _resolving.Remove(frame);
+        _resolvingPath.Remove(frame);
         _resolved.Add(frame);
         _file = saved;
     }
+
+    private string CyclePath(Symbol repeated) =>
+        string.Join(" -> ", _resolvingPath.Skip(_resolvingPath.IndexOf(repeated)).Append(repeated).Select(s => s.Name));
 
     private bool SameDimension(ParserRuleContext at, FrameSymbol source, FrameSymbol frame)
     {
@@ -228,9 +233,10 @@ internal sealed partial class Binder
         if (_resolved.Contains(transform)) return;
         if (!_resolving.Add(transform))
         {
-            _diagnostics.ReportDefinitionCycle(transform.Declaration, "transform", transform.Name);
+            _diagnostics.ReportDefinitionCycle(transform.Declaration, "transform", CyclePath(transform));
             return;
         }
+        _resolvingPath.Add(transform);
         var saved = _file;
         var (syntax, file) = _transformBodies[transform];
         _file = file;
@@ -292,6 +298,7 @@ internal sealed partial class Binder
                 break;
         }
         _resolving.Remove(transform);
+        _resolvingPath.Remove(transform);
         _resolved.Add(transform);
         _file = saved;
     }

@@ -24,6 +24,7 @@ internal sealed partial class Binder
     private readonly Dictionary<FrameSymbol, (FrameBodyContext Body, string File)> _frameBodies = [];
     private readonly Dictionary<TransformSymbol, (TransformDefinitionContext Syntax, string File)> _transformBodies = [];
     private readonly HashSet<Symbol> _resolving = [];
+    private readonly List<Symbol> _resolvingPath = [];
     private readonly HashSet<Symbol> _resolved = [];
 
     private string _file = "";

@@ -171,6 +171,42 @@ public sealed class Binder_Diagnostics
     }
 
     [Fact]
+    public void Name_of_the_wrong_kind_is_an_error()
+    {
+        var d = MarkedSource.AssertSingle(Macro("w = u;", inputs: "u : «e3d.vectors»"), "GMAC0103", DslSnippets.E3d);
+        Assert.Equal("'e3d.vectors' is a subspace, not a multivector class", d.Message);
+    }
+
+    [Fact]
+    public void Frames_defined_through_each_other_are_a_cycle()
+    {
+        var d = MarkedSource.AssertSingle("""
+            define frame «a» as basis: {x} orthogonalize b end frame
+            define frame b as basis: {y} transform a by BCM = {{2}} end frame
+            """, "GMAC0123");
+        Assert.Equal("frame definitions form a cycle: a -> b -> a", d.Message);
+    }
+
+    [Fact]
+    public void Transforms_aliasing_each_other_are_a_cycle()
+    {
+        var d = MarkedSource.AssertSingle("""
+            define transform «p» : e3d -> e3d as alias of q end transform
+            define transform q : e3d -> e3d as alias of p end transform
+            """, "GMAC0123", DslSnippets.E3d);
+        Assert.Equal("transform definitions form a cycle: p -> q -> p", d.Message);
+    }
+
+    [Fact]
+    public void Missing_folder_is_reported_not_thrown()
+    {
+        var project = DslProject.Load(Path.Combine(Path.GetTempPath(), "gmac-no-such-folder-" + Guid.NewGuid()));
+        var d = Assert.Single(project.Diagnostics);
+        Assert.Equal("GMAC0003", d.Code);
+        Assert.True(d.IsError);
+    }
+
+    [Fact]
     public void Unused_temporary_is_a_warning()
     {
         var d = MarkedSource.AssertSingle(Macro("«t» = u op v;\nw = u;"), "GMAC0201", DslSnippets.E3d);
