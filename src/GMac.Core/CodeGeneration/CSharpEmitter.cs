@@ -1,0 +1,71 @@
+using System.Text;
+using System.Text.RegularExpressions;
+
+namespace GMac.Core.CodeGeneration;
+
+/// <summary>Prints a code block as C# statements.</summary>
+public static partial class CSharpEmitter
+{
+    private static readonly string[] TemporaryPrefixes = ["tmp", "gmacTmp", "gmacTemp", "__gmacTmp"];
+
+    public static string Emit(CodeBlock block, CSharpEmitOptions? options = null)
+    {
+        options ??= new CSharpEmitOptions();
+        var temps = block.Temporaries.Select(t => t.Target).Distinct().ToList();
+        var prefix = TemporaryPrefixes.FirstOrDefault(p => Enumerable.Range(0, temps.Count).All(i => !options.IsNameTaken($"{p}{i}")))
+            ?? throw new InvalidOperationException("Every temporary-name prefix clashes with a name in scope.");
+        var tempName = temps.Select((t, i) => (t, i)).ToDictionary(x => x.t, x => $"{prefix}{x.i}", StringComparer.Ordinal);
+
+        string VariableText(string name) =>
+            tempName.TryGetValue(name, out var t) ? t
+            : block.InputText.TryGetValue(name, out var input) ? (IsSimple(input) ? input.Trim() : $"({input.Trim()})")
+            : throw new InvalidOperationException($"'{name}' is neither an input nor a temporary of the block.");
+
+        string Print(Expr e) => ExprPrinter.Print(e, VariableText, CSharpFunction);
+
+        var sb = new StringBuilder();
+        if (options.IncludeStatistics)
+            sb.Append(options.Indent).Append("// GMac: ").Append(block.Statistics()).Append(options.NewLine);
+        var declared = new HashSet<string>(StringComparer.Ordinal);
+        foreach (var s in block.Statements)
+        {
+            sb.Append(options.Indent);
+            switch (s)
+            {
+                case AssignmentStatement { IsOutput: true } o:
+                    sb.Append(block.OutputTargets[o.Target].Trim()).Append(" = ").Append(Print(o.Value)).Append(';');
+                    break;
+                case AssignmentStatement t:
+                    var name = tempName[t.Target];
+                    if (declared.Add(name)) sb.Append(options.ScalarType).Append(' ');
+                    sb.Append(name).Append(" = ").Append(Print(t.Value)).Append(';');
+                    break;
+                case VerbatimStatement v:
+                    foreach (var part in v.Parts) sb.Append(part.Text ?? Print(part.Value!));
+                    break;
+            }
+            sb.Append(options.NewLine);
+        }
+        return sb.ToString();
+    }
+
+    private static string CSharpFunction(string f) => f switch
+    {
+        "sin" => "Math.Sin",
+        "cos" => "Math.Cos",
+        "tan" => "Math.Tan",
+        "sqrt" => "Math.Sqrt",
+        "exp" => "Math.Exp",
+        "log" => "Math.Log",
+        "atan2" => "Math.Atan2",
+        "abs" => "Math.Abs",
+        "pow" => "Math.Pow",
+        _ => throw new InvalidOperationException($"No C# function for '{f}'."),
+    };
+
+    /// <summary>An identifier, member access, element access or number: safe to use without parentheses.</summary>
+    private static bool IsSimple(string text) => SimpleExpression().IsMatch(text.Trim());
+
+    [GeneratedRegex(@"^(@?[A-Za-z_][A-Za-z0-9_]*(\s*\.\s*@?[A-Za-z_][A-Za-z0-9_]*|\s*\[[^\[\]]*\])*|[0-9]+(\.[0-9]+)?([eE][+-]?[0-9]+)?[dD]?)$")]
+    private static partial Regex SimpleExpression();
+}

@@ -1,0 +1,19 @@
+namespace GMac.Core.CodeGeneration;
+
+/// <summary>A call of a math function by its neutral name (sin, cos, tan, sqrt, exp, log, atan2, abs, pow).</summary>
+public sealed class CallExpr : Expr
+{
+    private readonly Expr[] _arguments;
+
+    public string Function { get; }
+
+    public CallExpr(string function, IReadOnlyList<Expr> arguments) : base(HashCode.Combine(CombineHashes(8, arguments), function))
+    {
+        Function = function;
+        _arguments = arguments.ToArray();
+    }
+
+    public override IReadOnlyList<Expr> Children => _arguments;
+    public override Expr WithChildren(IReadOnlyList<Expr> children) => new CallExpr(Function, children);
+    protected override bool SameNode(Expr other) => ((CallExpr)other).Function == Function;
+}

@@ -1,0 +1,56 @@
+namespace GMac.Core.CodeGeneration;
+
+/// <summary>
+/// Straight-line code: single assignments of temporaries and outputs over named inputs. Inputs
+/// are read through <see cref="InputText"/> (the target-language text bound to each input
+/// variable); outputs are written to <see cref="OutputTargets"/>. Passes return new blocks.
+/// </summary>
+public sealed class CodeBlock
+{
+    public IReadOnlyList<CodeStatement> Statements { get; }
+
+    /// <summary>Input variable name → the expression text that supplies it.</summary>
+    public IReadOnlyDictionary<string, string> InputText { get; }
+
+    /// <summary>Output name → the assignable text that receives it.</summary>
+    public IReadOnlyDictionary<string, string> OutputTargets { get; }
+
+    public CodeBlock(IEnumerable<CodeStatement> statements, IReadOnlyDictionary<string, string> inputText, IReadOnlyDictionary<string, string> outputTargets)
+    {
+        Statements = statements.ToArray();
+        InputText = inputText;
+        OutputTargets = outputTargets;
+    }
+
+    public CodeBlock WithStatements(IEnumerable<CodeStatement> statements) => new(statements, InputText, OutputTargets);
+
+    public IEnumerable<AssignmentStatement> Temporaries => Statements.OfType<AssignmentStatement>().Where(a => !a.IsOutput);
+
+    public IEnumerable<AssignmentStatement> Outputs => Statements.OfType<AssignmentStatement>().Where(a => a.IsOutput);
+
+    public bool IsTemporary(string name) => Temporaries.Any(t => t.Target == name);
+
+    public CodeStatistics Statistics() => CodeStatistics.Of(this);
+
+    /// <summary>Evaluates the block for given input values (for tests and verification).</summary>
+    public IReadOnlyDictionary<string, double> Evaluate(IReadOnlyDictionary<string, double> inputs)
+    {
+        var values = new Dictionary<string, double>(inputs, StringComparer.Ordinal);
+        var outputs = new Dictionary<string, double>(StringComparer.Ordinal);
+        foreach (var s in Statements.OfType<AssignmentStatement>())
+        {
+            var v = ExprEvaluator.Evaluate(s.Value, values);
+            values[s.Target] = v;
+            if (s.IsOutput) outputs[s.Target] = v;
+        }
+        return outputs;
+    }
+
+    public override string ToString() =>
+        string.Join(Environment.NewLine, Statements.Select(s => s switch
+        {
+            AssignmentStatement a => $"{(a.IsOutput ? "" : "temp ")}{a.Target} = {a.Value};",
+            VerbatimStatement v => string.Concat(v.Parts.Select(p => p.Text ?? $"<{p.Value}>")),
+            _ => s.ToString(),
+        }));
+}

@@ -1,0 +1,19 @@
+using GMac.Core.Symbolic;
+
+namespace GMac.Core.CodeGeneration;
+
+/// <summary>
+/// Everything code generation needs for one binding point. <see cref="Evaluate"/> runs the macro
+/// symbolically; given a recorder it must pass every intermediate multivector through it
+/// (outside "join on" regions), and without one it yields fully expanded outputs.
+/// </summary>
+public sealed record CodeGenerationRequest(
+    Func<TemporaryRecorder?, SymbolicProgram> Evaluate,
+    IReadOnlyDictionary<string, string> InputText,
+    IReadOnlyDictionary<string, string> OutputTargets)
+{
+    /// <summary>Applied to every output and temporary: side relations, assumptions, the CAS.</summary>
+    public Func<Scalar, Scalar>? Simplify { get; init; }
+
+    public JoinMode Join { get; init; } = JoinMode.Automatic;
+}

@@ -1,0 +1,89 @@
+using GMac.Core.Symbolic;
+
+namespace GMac.Core.CodeGeneration;
+
+/// <summary>From symbolic evaluation to an optimized code block.</summary>
+public static class CodeGenerator
+{
+    public static CodeGenerationResult Generate(CodeGenerationRequest request)
+    {
+        request = request with { Simplify = EffectiveSimplifier(request.Simplify) };
+        CodeBlock? joined = null, split = null;
+        if (request.Join != JoinMode.Split)
+            joined = Optimizer.Optimize(Build(request.Evaluate(null), [], request));
+        if (request.Join != JoinMode.Joined)
+        {
+            var recorder = new TemporaryRecorder(request.Simplify);
+            var program = request.Evaluate(recorder);
+            split = Optimizer.Optimize(Build(program, recorder.Temporaries, request));
+        }
+
+        if (joined is null) return new CodeGenerationResult(split!, split!.Statistics(), JoinMode.Split, null);
+        if (split is null) return new CodeGenerationResult(joined, joined.Statistics(), JoinMode.Joined, null);
+        var (js, ss) = (joined.Statistics(), split.Statistics());
+        var preferJoined = js.Cost < ss.Cost || (js.Cost == ss.Cost && js.Temporaries <= ss.Temporaries);
+        return preferJoined
+            ? new CodeGenerationResult(joined, js, JoinMode.Joined, ss)
+            : new CodeGenerationResult(split, ss, JoinMode.Split, js);
+    }
+
+    /// <summary>The caller's simplifier (side relations, assumptions) with sums cancelled against their inverses.</summary>
+    private static Func<Scalar, Scalar> EffectiveSimplifier(Func<Scalar, Scalar>? simplify)
+    {
+        simplify ??= s => s;
+        return s =>
+        {
+            s = simplify(s);
+            var cancelled = InverseCancellation.Cancel(s);
+            return ReferenceEquals(cancelled, s) ? s : simplify(cancelled);
+        };
+    }
+
+    /// <summary>Lowers a symbolic program (and its recorded temporaries) to an unoptimized code block.</summary>
+    public static CodeBlock Build(SymbolicProgram program, IReadOnlyList<(string Name, Scalar Value)> temporaries, CodeGenerationRequest request)
+    {
+        var simplify = request.Simplify ?? (s => s);
+        var inputs = new HashSet<string>(request.InputText.Keys, StringComparer.Ordinal);
+
+        // Temporaries and outputs as symbolic assignments, so the inliner can merge them.
+        var assignments = temporaries.Select(t => new SymbolicInliner.Assignment(t.Name, t.Value, false)).ToList();
+        var verbatim = new Dictionary<int, SymbolicVerbatim>();
+        foreach (var s in program.Statements)
+        {
+            switch (s)
+            {
+                case SymbolicOutput o when request.OutputTargets.ContainsKey(o.Name):
+                    assignments.Add(new SymbolicInliner.Assignment(o.Name, simplify(o.Value), true));
+                    break;
+                case SymbolicVerbatim v:
+                    verbatim[assignments.Count] = v; // placed before the assignment that follows it
+                    break;
+            }
+        }
+        var verbatimCount = verbatim.Count;
+        if (verbatimCount == 0) SymbolicInliner.Inline(assignments, simplify);
+
+        var known = new HashSet<string>(inputs, StringComparer.Ordinal);
+        Expr Lower(Scalar s, string where)
+        {
+            var unknown = s.Variables.Where(v => !known.Contains(v)).ToArray();
+            if (unknown.Length > 0)
+                throw new InvalidOperationException($"{where} reads {string.Join(", ", unknown.Select(u => $"'{u}'"))}, which no input binding supplies.");
+            return ScalarLowering.Lower(s);
+        }
+
+        var statements = new List<CodeStatement>();
+        for (var i = 0; i <= assignments.Count; i++)
+        {
+            if (verbatim.TryGetValue(i, out var v))
+                statements.Add(new VerbatimStatement(v.Parts.Select(p => p.Value is null
+                    ? VerbatimPart.Literal(p.Text ?? "")
+                    : VerbatimPart.Expression(Lower(simplify(p.Value), "output text"))).ToArray()));
+            if (i == assignments.Count) break;
+            var a = assignments[i];
+            statements.Add(new AssignmentStatement(a.Name, Lower(a.Value, a.IsOutput ? $"output {a.Name}" : $"temporary {a.Name}"), a.IsOutput));
+            known.Add(a.Name);
+        }
+        return new CodeBlock(statements, request.InputText, request.OutputTargets);
+    }
+}

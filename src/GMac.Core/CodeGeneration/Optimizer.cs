@@ -1,0 +1,30 @@
+using GMac.Core.CodeGeneration.Passes;
+
+namespace GMac.Core.CodeGeneration;
+
+/// <summary>Runs the passes in an order where each one prepares work for the next, to a fixed point.</summary>
+public sealed class Optimizer
+{
+    public static CodeBlock Optimize(CodeBlock block, bool reuseTemporaries = false)
+    {
+        var fold = new ConstantFoldingPass();
+        var copy = new CopyPropagationPass();
+        var strength = new StrengthReductionPass();
+        var inline = new InlineSingleUsePass();
+        var cse = new CommonSubexpressionPass();
+        var dead = new DeadCodePass();
+
+        block = dead.Run(copy.Run(fold.Run(block)));
+        block = fold.Run(strength.Run(block));
+        for (var round = 0; round < 8; round++)
+        {
+            var before = block.ToString();
+            block = inline.Run(block);
+            block = copy.Run(fold.Run(block));
+            block = dead.Run(cse.Run(block));
+            if (block.ToString() == before) break;
+        }
+        block = strength.Run(block); // CSE may expose repeated denominators
+        return reuseTemporaries ? new TemporaryReusePass().Run(block) : block;
+    }
+}

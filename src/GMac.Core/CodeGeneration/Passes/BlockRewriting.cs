@@ -1,0 +1,63 @@
+namespace GMac.Core.CodeGeneration.Passes;
+
+/// <summary>Shared helpers of the passes: use counts and substitution of temporaries.</summary>
+internal static class BlockRewriting
+{
+    /// <summary>How many times each variable is read, over all statements.</summary>
+    public static Dictionary<string, int> UseCounts(IEnumerable<CodeStatement> statements)
+    {
+        var counts = new Dictionary<string, int>(StringComparer.Ordinal);
+        foreach (var s in statements)
+        foreach (var e in s.Expressions)
+        foreach (var node in e.DescendantsAndSelf())
+            if (node is VariableExpr v) counts[v.Name] = counts.GetValueOrDefault(v.Name) + 1;
+        return counts;
+    }
+
+    /// <summary>Replaces the chosen temporaries by their values everywhere and removes their statements.</summary>
+    public static CodeBlock InlineTemporaries(CodeBlock block, Func<AssignmentStatement, bool> shouldInline)
+    {
+        var replacements = new Dictionary<string, Expr>(StringComparer.Ordinal);
+        var result = new List<CodeStatement>();
+        foreach (var s in block.Statements)
+        {
+            var rewritten = Substitute(s, replacements);
+            if (rewritten is AssignmentStatement { IsOutput: false } temp && shouldInline(temp))
+            {
+                replacements[temp.Target] = temp.Value;
+                continue;
+            }
+            result.Add(rewritten);
+        }
+        return block.WithStatements(result);
+    }
+
+    public static CodeStatement Substitute(CodeStatement s, IReadOnlyDictionary<string, Expr> replacements)
+    {
+        if (replacements.Count == 0) return s;
+        var changed = false;
+        var exprs = s.Expressions.Select(e =>
+        {
+            var r = Substitute(e, replacements);
+            changed |= !ReferenceEquals(r, e);
+            return r;
+        }).ToArray();
+        return changed ? s.WithExpressions(exprs) : s;
+    }
+
+    public static Expr Substitute(Expr e, IReadOnlyDictionary<string, Expr> replacements) =>
+        e.Rewrite(node => node switch
+        {
+            VariableExpr v when replacements.TryGetValue(v.Name, out var r) => r,
+            _ when node.IsLeaf => node,
+            _ => ExprFactory.Normalize(node),
+        });
+
+    /// <summary>Applies a rewrite to every expression of every statement.</summary>
+    public static CodeBlock MapExpressions(CodeBlock block, Func<Expr, Expr> map) =>
+        block.WithStatements(block.Statements.Select(s =>
+        {
+            var exprs = s.Expressions.Select(map).ToArray();
+            return exprs.Where((e, i) => !ReferenceEquals(e, s.Expressions[i])).Any() ? s.WithExpressions(exprs) : s;
+        }));
+}

@@ -1,0 +1,18 @@
+namespace GMac.Core.CodeGeneration;
+
+/// <summary>base^exponent for an integer exponent; strength reduction turns it into products.</summary>
+public sealed class PowerExpr : Expr
+{
+    public Expr Base { get; }
+    public int Exponent { get; }
+
+    public PowerExpr(Expr @base, int exponent) : base(HashCode.Combine(CombineHashes(7, [@base]), exponent))
+    {
+        Base = @base;
+        Exponent = exponent;
+    }
+
+    public override IReadOnlyList<Expr> Children => [Base];
+    public override Expr WithChildren(IReadOnlyList<Expr> children) => new PowerExpr(children[0], Exponent);
+    protected override bool SameNode(Expr other) => ((PowerExpr)other).Exponent == Exponent;
+}

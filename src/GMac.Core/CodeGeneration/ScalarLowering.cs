@@ -1,0 +1,109 @@
+using GMac.Core.Numerics;
+using GMac.Core.Symbolic;
+
+namespace GMac.Core.CodeGeneration;
+
+/// <summary>
+/// Turns a canonical symbolic scalar (a sum of monomials) into an expression tree, factoring as
+/// it goes: a numeric factor shared by every term is pulled out, and then, greedily, the atom
+/// found in the most terms (a Horner-like scheme), which never adds a multiplication and saves
+/// one for every extra term that shares the atom.
+/// </summary>
+public static class ScalarLowering
+{
+    private sealed record PolyTerm(Rational Coefficient, Dictionary<Atom, int> Powers);
+
+    public static Expr Lower(Scalar s) => LowerSum(s.Terms.Select(ToPolyTerm).ToList());
+
+    private static PolyTerm ToPolyTerm(Term t) =>
+        new(t.Coefficient, t.Monomial.Factors.ToDictionary(f => f.Atom, f => f.Power));
+
+    private static Expr LowerSum(List<PolyTerm> terms)
+    {
+        if (terms.Count == 0) return ConstantExpr.Zero;
+        if (terms.Count == 1) return LowerTerm(terms[0]);
+
+        // A numeric factor common to all terms: 2xy − 2wz → 2(xy − wz).
+        var magnitude = terms[0].Coefficient.Abs();
+        if (!magnitude.IsOne && terms.All(t => t.Coefficient.Abs() == magnitude))
+            return ExprFactory.Product(ConstantExpr.From(magnitude), LowerSum(terms.Select(t => t with { Coefficient = t.Coefficient / magnitude }).ToList()));
+
+        var best = BestSharedAtom(terms);
+        if (best is null) return ExprFactory.Sum(terms.Select(LowerTerm));
+
+        var with = new List<PolyTerm>();
+        var without = new List<PolyTerm>();
+        foreach (var t in terms)
+        {
+            if (t.Powers.TryGetValue(best, out var p) && p > 0)
+            {
+                var powers = new Dictionary<Atom, int>(t.Powers);
+                if (p == 1) powers.Remove(best); else powers[best] = p - 1;
+                with.Add(t with { Powers = powers });
+            }
+            else without.Add(t);
+        }
+        var factored = best.Kind == AtomKind.Inverse
+            ? ExprFactory.Quotient(LowerSum(with), Lower(best.Arguments[0]))
+            : ExprFactory.Product(LowerAtom(best), LowerSum(with));
+        return without.Count == 0 ? factored : ExprFactory.Sum(factored, LowerSum(without));
+    }
+
+    /// <summary>The atom with a positive power in the most terms (at least two), ties to the canonical order.</summary>
+    private static Atom? BestSharedAtom(List<PolyTerm> terms)
+    {
+        var counts = new Dictionary<Atom, int>();
+        foreach (var t in terms)
+        foreach (var (atom, power) in t.Powers)
+            if (power > 0) counts[atom] = counts.GetValueOrDefault(atom) + 1;
+        Atom? best = null;
+        var bestCount = 1;
+        foreach (var (atom, count) in counts)
+        {
+            if (count > bestCount || (count == bestCount && best is not null && atom.CompareTo(best) < 0))
+            {
+                best = atom;
+                bestCount = count;
+            }
+        }
+        return bestCount >= 2 ? best : null;
+    }
+
+    private static Expr LowerTerm(PolyTerm t)
+    {
+        var numerator = new List<Expr> { ConstantExpr.From(t.Coefficient) };
+        var denominator = new List<Expr>();
+        foreach (var (atom, power) in t.Powers.OrderBy(kv => kv.Key))
+        {
+            if (atom.Kind == AtomKind.Inverse)
+            {
+                // inv(s)^p: s^p in the denominator (or the numerator for negative p)
+                var s = Lower(atom.Arguments[0]);
+                (power > 0 ? denominator : numerator).Add(ExprFactory.Power(s, Math.Abs(power)));
+            }
+            else
+            {
+                (power > 0 ? numerator : denominator).Add(ExprFactory.Power(LowerAtom(atom), Math.Abs(power)));
+            }
+        }
+        var top = ExprFactory.Product(numerator);
+        return denominator.Count == 0 ? top : ExprFactory.Quotient(top, ExprFactory.Product(denominator));
+    }
+
+    private static Expr LowerAtom(Atom atom) => atom.Kind switch
+    {
+        AtomKind.Variable => ExprFactory.Variable(atom.Name),
+        AtomKind.Pi => new ConstantExpr(Math.PI),
+        AtomKind.Inverse => ExprFactory.Quotient(ConstantExpr.One, Lower(atom.Arguments[0])),
+        AtomKind.Sin => ExprFactory.Call("sin", Lower(atom.Arguments[0])),
+        AtomKind.Cos => ExprFactory.Call("cos", Lower(atom.Arguments[0])),
+        AtomKind.Tan => ExprFactory.Call("tan", Lower(atom.Arguments[0])),
+        AtomKind.Sqrt => ExprFactory.Call("sqrt", Lower(atom.Arguments[0])),
+        AtomKind.Exp => ExprFactory.Call("exp", Lower(atom.Arguments[0])),
+        AtomKind.Log => ExprFactory.Call("log", Lower(atom.Arguments[0])),
+        AtomKind.Abs => ExprFactory.Call("abs", Lower(atom.Arguments[0])),
+        AtomKind.Atan2 => ExprFactory.Call("atan2", Lower(atom.Arguments[0]), Lower(atom.Arguments[1])),
+        AtomKind.Pow => ExprFactory.Call("pow", Lower(atom.Arguments[0]), Lower(atom.Arguments[1])),
+        _ => throw new InvalidOperationException($"No lowering for atom kind {atom.Kind}."),
+    };
+}

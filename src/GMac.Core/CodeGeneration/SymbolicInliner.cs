@@ -1,0 +1,52 @@
+using GMac.Core.Symbolic;
+
+namespace GMac.Core.CodeGeneration;
+
+/// <summary>
+/// Before lowering, tries substituting each temporary into its readers at the symbolic level,
+/// where the canonical form merges like terms and cancels (unlike a tree substitution), and keeps
+/// the substitution when the readers then cost no more than the temporary and the readers did.
+/// Costs are measured on the lowered (factored) trees, so the choice follows real operation counts.
+/// </summary>
+internal static class SymbolicInliner
+{
+    public sealed class Assignment(string name, Scalar value, bool isOutput)
+    {
+        public string Name { get; } = name;
+        public Scalar Value { get; set; } = value;
+        public bool IsOutput { get; } = isOutput;
+    }
+
+    public static void Inline(List<Assignment> assignments, Func<Scalar, Scalar> simplify, int maxRounds = 4)
+    {
+        var cost = new Dictionary<Scalar, int>();
+        int Cost(Scalar s)
+        {
+            if (cost.TryGetValue(s, out var c)) return c;
+            var block = new CodeBlock([new AssignmentStatement("x", ScalarLowering.Lower(s), true)], new Dictionary<string, string>(), new Dictionary<string, string>());
+            return cost[s] = block.Statistics().Cost;
+        }
+
+        for (var round = 0; round < maxRounds; round++)
+        {
+            var changed = false;
+            for (var i = 0; i < assignments.Count; i++)
+            {
+                var temp = assignments[i];
+                if (temp.IsOutput) continue;
+                var readers = assignments.Where(a => a.Value.Variables.Contains(temp.Name)).ToList();
+                if (readers.Count == 0) continue;
+                var replacement = new Dictionary<string, Scalar>(StringComparer.Ordinal) { [temp.Name] = temp.Value };
+                var substituted = readers.Select(r => simplify(r.Value.Substitute(replacement))).ToList();
+                var keep = Cost(temp.Value) + readers.Sum(r => Cost(r.Value));
+                var inline = substituted.Sum(Cost);
+                if (inline > keep) continue;
+                for (var k = 0; k < readers.Count; k++) readers[k].Value = substituted[k];
+                assignments.RemoveAt(i);
+                i--;
+                changed = true;
+            }
+            if (!changed) break;
+        }
+    }
+}

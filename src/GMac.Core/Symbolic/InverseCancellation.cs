@@ -1,0 +1,107 @@
+
+namespace GMac.Core.Symbolic;
+
+/// <summary>
+/// Cancels a sum s against its inverse atom 1/s: an expression B·(1/s) + R whose cofactor B is an
+/// exact polynomial multiple of s, B = Q·s, becomes Q + R. Exact division uses the multivariate
+/// division algorithm in lexicographic order, every atom (sin, sqrt, other inverses…) acting as a
+/// variable. This is what turns (x² + y²)/(x² + y²) into 1 and the quasi-norm of a rotor built
+/// from a normalized axis into cos² + sin², which the side relations finish.
+/// </summary>
+public static class InverseCancellation
+{
+    private const int MaxDivisionSteps = 20_000;
+
+    public static Scalar Cancel(Scalar e)
+    {
+        for (var round = 0; round < 16; round++)
+        {
+            var changed = false;
+            foreach (var atom in e.Atoms().Where(a => a.Kind == AtomKind.Inverse).OrderBy(a => a).ToArray())
+            {
+                var (cofactor, rest) = Split(e, atom);
+                if (Scalar.IsZero(cofactor)) continue;
+                if (!TryDivide(cofactor, atom.Arguments[0], out var quotient)) continue;
+                e = quotient + rest;
+                changed = true;
+                break;
+            }
+            if (!changed) break;
+        }
+        return e;
+    }
+
+    /// <summary>e = cofactor·atom + rest, where rest has no positive power of the atom.</summary>
+    private static (Scalar Cofactor, Scalar Remaining) Split(Scalar e, Atom atom)
+    {
+        var cofactor = new List<Term>();
+        var rest = new List<Term>();
+        foreach (var t in e.Terms)
+        {
+            var power = t.Monomial.Factors.FirstOrDefault(f => ReferenceEquals(f.Atom, atom)).Power;
+            if (power > 0) cofactor.Add(new Term(t.Coefficient, WithPower(t.Monomial, atom, power - 1)));
+            else rest.Add(t);
+        }
+        return (Scalar.FromTerms(cofactor), Scalar.FromTerms(rest));
+    }
+
+    private static Monomial WithPower(Monomial m, Atom atom, int power) =>
+        Monomial.Create(m.Factors.Where(f => !ReferenceEquals(f.Atom, atom)).Concat(power != 0 ? [new Factor(atom, power)] : []));
+
+    /// <summary>Exact division b / s; false when a remainder is left.</summary>
+    public static bool TryDivide(Scalar b, Scalar s, out Scalar quotient)
+    {
+        quotient = Scalar.Zero;
+        if (Scalar.IsZero(s)) return false;
+        var lead = Leading(s);
+        var remainder = b;
+        var q = new List<Term>();
+        for (var step = 0; step < MaxDivisionSteps && !Scalar.IsZero(remainder); step++)
+        {
+            var top = Leading(remainder);
+            var factor = Divide(top.Monomial, lead.Monomial);
+            if (factor is null) return false; // the leading term is not divisible: a remainder stays
+            var t = new Term(top.Coefficient / lead.Coefficient, factor);
+            q.Add(t);
+            remainder -= Scalar.FromTerm(t.Coefficient, t.Monomial) * s;
+        }
+        if (!Scalar.IsZero(remainder)) return false;
+        quotient = Scalar.FromTerms(q);
+        return true;
+    }
+
+    /// <summary>The greatest term in lexicographic order: the highest atom first, then its power.</summary>
+    private static Term Leading(Scalar s)
+    {
+        var best = s.Terms[0];
+        for (var i = 1; i < s.Terms.Count; i++)
+            if (CompareLex(s.Terms[i].Monomial, best.Monomial) > 0) best = s.Terms[i];
+        return best;
+    }
+
+    private static int CompareLex(Monomial a, Monomial b)
+    {
+        var powersA = a.Factors.ToDictionary(f => f.Atom, f => f.Power);
+        var powersB = b.Factors.ToDictionary(f => f.Atom, f => f.Power);
+        foreach (var atom in powersA.Keys.Union(powersB.Keys).OrderByDescending(x => x))
+        {
+            var c = powersA.GetValueOrDefault(atom).CompareTo(powersB.GetValueOrDefault(atom));
+            if (c != 0) return c;
+        }
+        return 0;
+    }
+
+    /// <summary>m / d when every power of d is at most m's (as exponents may be negative, compare signed).</summary>
+    private static Monomial? Divide(Monomial m, Monomial d)
+    {
+        var powers = m.Factors.ToDictionary(f => f.Atom, f => f.Power);
+        foreach (var f in d.Factors)
+        {
+            var have = powers.GetValueOrDefault(f.Atom);
+            if (f.Power > 0 ? have < f.Power : have > f.Power) return null;
+            powers[f.Atom] = have - f.Power;
+        }
+        return Monomial.Create(powers.Where(kv => kv.Value != 0).Select(kv => new Factor(kv.Key, kv.Value)));
+    }
+
+}
