@@ -1,5 +1,3 @@
-using System.Collections.Concurrent;
-
 namespace GMac.Core.Symbolic;
 
 /// <summary>
@@ -9,7 +7,7 @@ namespace GMac.Core.Symbolic;
 /// </summary>
 public sealed class Atom : IComparable<Atom>
 {
-    private static readonly ConcurrentDictionary<Atom, Atom> Table = new(new StructuralComparer());
+    private static readonly WeakInternTable<Atom> Table = new(new StructuralComparer());
 
     private readonly Scalar[] _arguments;
     private readonly int _hash;
@@ -42,7 +40,7 @@ public sealed class Atom : IComparable<Atom>
     internal static Atom Create(AtomKind kind, string name, params Scalar[] arguments)
     {
         var candidate = new Atom(kind, name, arguments);
-        return Table.GetOrAdd(candidate, candidate);
+        return Table.GetOrAdd(candidate);
     }
 
     public override int GetHashCode() => _hash;

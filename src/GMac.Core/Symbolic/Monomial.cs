@@ -1,5 +1,3 @@
-using System.Collections.Concurrent;
-
 namespace GMac.Core.Symbolic;
 
 /// <summary>
@@ -9,7 +7,7 @@ namespace GMac.Core.Symbolic;
 /// </summary>
 public sealed class Monomial : IComparable<Monomial>
 {
-    private static readonly ConcurrentDictionary<Monomial, Monomial> Table = new(new StructuralComparer());
+    private static readonly WeakInternTable<Monomial> Table = new(new StructuralComparer());
 
     public static readonly Monomial One = Intern([]);
 
@@ -40,7 +38,7 @@ public sealed class Monomial : IComparable<Monomial>
     internal static Monomial Intern(Factor[] factors)
     {
         var candidate = new Monomial(factors);
-        return Table.GetOrAdd(candidate, candidate);
+        return Table.GetOrAdd(candidate);
     }
 
     internal static Monomial FromAtom(Atom atom, int power) => Intern([new Factor(atom, power)]);

@@ -1,4 +1,3 @@
-using System.Collections.Concurrent;
 using GMac.Core.Numerics;
 
 namespace GMac.Core.Symbolic;
@@ -11,7 +10,7 @@ namespace GMac.Core.Symbolic;
 /// </summary>
 public sealed partial class Scalar : IComparable<Scalar>
 {
-    private static readonly ConcurrentDictionary<Scalar, Scalar> Table = new(new StructuralComparer());
+    private static readonly WeakInternTable<Scalar> Table = new(new StructuralComparer());
 
     public static Scalar Zero { get; } = Intern([]);
     public static Scalar One { get; } = Intern([new Term(Rational.One, Monomial.One)]);
@@ -114,10 +113,10 @@ public sealed partial class Scalar : IComparable<Scalar>
     private static Scalar Intern(Term[] terms)
     {
         var candidate = new Scalar(terms);
-        return Table.GetOrAdd(candidate, candidate);
+        return Table.GetOrAdd(candidate);
     }
 
-    /// <summary>Number of distinct scalars created so far (the intern table keeps them alive).</summary>
+    /// <summary>Entries in the scalar intern table (live scalars plus dead ones not yet swept).</summary>
     internal static int InternedCount => Table.Count;
 
     public override int GetHashCode() => _hash;
