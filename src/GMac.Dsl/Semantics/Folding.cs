@@ -5,6 +5,8 @@ namespace GMac.Dsl.Semantics;
 /// <summary>Exact evaluation of constant scalar expressions (matrix entries, limits, counts).</summary>
 internal static class Folding
 {
+    private const long MaxBits = 1 << 16;
+
     public static Rational? TryFold(BoundExpression expression)
     {
         switch (expression)
@@ -24,7 +26,9 @@ internal static class Folding
                     case BinaryOperator.Divide: return r.IsZero ? null : l / r;
                     case BinaryOperator.Power:
                         if (!r.IsInteger || r.Abs() > 64 || (l.IsZero && r.Sign < 0)) return null;
-                        return l.Pow((int)r.Numerator);
+                        // Nested powers grow exponentially; an entry this large is a mistake.
+                        var bits = Math.Max(l.Numerator.GetBitLength(), l.Denominator.GetBitLength()) * (long)r.Abs().Numerator;
+                        return bits > MaxBits ? null : l.Pow((int)r.Numerator);
                     default: return null;
                 }
             }

@@ -131,6 +131,13 @@ public sealed class Binder_Diagnostics
     }
 
     [Fact]
+    public void Exploding_constant_power_is_refused_not_computed()
+    {
+        var d = MarkedSource.AssertSingle("define frame a as basis: {x} IPM = {{«((((2^64)^64)^64)^64)^64»}} end frame", "GMAC0130");
+        Assert.Equal("invalid scalar expression: a matrix entry must be an exact rational constant", d.Message);
+    }
+
+    [Fact]
     public void Multivector_function_in_a_constant_scalar_is_an_error()
     {
         var d = MarkedSource.AssertSingle("define frame a as basis: {x} IPM = {{«norm(2)»}} end frame", "GMAC0130");
