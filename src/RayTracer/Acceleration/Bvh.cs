@@ -1,4 +1,6 @@
+using System.Numerics;
 using System.Runtime.CompilerServices;
+using System.Runtime.Intrinsics;
 using RayTracer.Geometry;
 using RayTracer.Util;
 
@@ -13,13 +15,22 @@ public sealed class Bvh : AccelerationStructure
 {
     private const int BinCount = 16;
     private const int MaxDepth = 60;
+
+    // Each wide level pushes at most three entries beyond the one it pops.
+    private const int StackSize = 3 * MaxDepth + 8;
     private const double TraversalCost = 1.0;
     private const double IntersectionCost = 1.0;
 
     // Rounding slack on far slab distances (pbrt's 1 + 2γ₃) so no ray slips between adjacent boxes.
     private const double FarSlack = 1.0 + 6.0 * 1.1102230246251565e-16;
 
+    // Slack for the far distance of the vector slab test; see SlabRay.
+    private static readonly Vector256<double> FarSlackVector = Vector256.Create(FarSlack);
+
     private readonly BvhNode[] _nodes;
+    private readonly Bvh4Node[] _wide = [];
+    private readonly int[] _leafOffset = [];
+    private readonly int[] _leafCount = [];
 
     public Bvh(IReadOnlyList<GeometricObject> objects, int maxLeafSize = 4)
         : base(objects)
@@ -44,66 +55,93 @@ public sealed class Bvh : AccelerationStructure
         _nodes = [.. nodes];
         Table.Permute(order);
         Table.ReleaseBuildData();
+
+        // Collapse pairs of levels into four-wide nodes for traversal.
+        var wide = new List<Bvh4Node>(_nodes.Length / 3 + 1);
+        var leafOffsets = new List<int>();
+        var leafCounts = new List<int>();
+        Collapse(0, wide, leafOffsets, leafCounts);
+        _wide = [.. wide];
+        _leafOffset = [.. leafOffsets];
+        _leafCount = [.. leafCounts];
+        BinaryNodeCount = _nodes.Length;
+        _nodes = [];
     }
 
     public int MaxLeafSize { get; }
 
-    public int NodeCount => _nodes.Length;
+    /// <summary>Nodes of the binary SAH tree that was built.</summary>
+    public int BinaryNodeCount { get; }
 
+    /// <summary>Nodes of the four-wide tree used for traversal.</summary>
+    public int NodeCount => _wide.Length;
+
+    [SkipLocalsInit]
     private protected override bool TraverseNearest(in Ray ray, ref double t, ref int primitive)
     {
-        var r = new SlabRay(ray);
-        BvhNode[] nodes = _nodes;
-        PrimitiveTable table = Table;
-        if (!r.Hits(ref nodes[0], t, out _))
+        if (_wide.Length == 0)
         {
             return false;
         }
 
-        Span<int> stackNode = stackalloc int[MaxDepth + 4];
-        Span<double> stackEnter = stackalloc double[MaxDepth + 4];
-        int sp = 0, current = 0;
+        var r = new WideRay(ray);
+        Bvh4Node[] nodes = _wide;
+        PrimitiveTable table = Table;
+        Span<int> stackRef = stackalloc int[StackSize];
+        Span<double> stackEnter = stackalloc double[StackSize];
+        int sp = 0;
         bool hit = false;
+        int current = 0;
 
         while (true)
         {
-            ref BvhNode node = ref nodes[current];
-            if (node.Count == 0)
+            ref Bvh4Node node = ref nodes[current];
+            int mask = r.Hits(ref node, t, out Vector256<double> enter);
+
+            // Push the children that the ray enters, farthest first, so the nearest is popped next.
+            int pushedFrom = sp;
+            while (mask != 0)
             {
-                // Test both children here so that only boxes the ray enters are visited, nearest first.
-                int a = current + 1, b = node.Offset;
-                bool hitA = r.Hits(ref nodes[a], t, out double ta);
-                bool hitB = r.Hits(ref nodes[b], t, out double tb);
-                if (hitA && hitB)
+                int lane = BitOperations.TrailingZeroCount(mask);
+                mask &= mask - 1;
+                int child = lane switch { 0 => node.Child0, 1 => node.Child1, 2 => node.Child2, _ => node.Child3 };
+                double te = enter.GetElement(lane);
+                int j = sp++;
+                while (j > pushedFrom && stackEnter[j - 1] < te)
                 {
-                    if (tb < ta)
-                    {
-                        (a, b) = (b, a);
-                        tb = ta;
-                    }
-
-                    stackNode[sp] = b;
-                    stackEnter[sp++] = tb;
-                    current = a;
-                    continue;
+                    stackEnter[j] = stackEnter[j - 1];
+                    stackRef[j] = stackRef[j - 1];
+                    j--;
                 }
 
-                if (hitA)
-                {
-                    current = a;
-                    continue;
-                }
-
-                if (hitB)
-                {
-                    current = b;
-                    continue;
-                }
+                stackEnter[j] = te;
+                stackRef[j] = child;
             }
-            else
+
+            // Pop until an interior node to descend into is found, testing leaves on the way.
+            while (true)
             {
-                int end = node.Offset + node.Count;
-                for (int i = node.Offset; i < end; i++)
+                if (sp == 0)
+                {
+                    return hit;
+                }
+
+                sp--;
+                if (stackEnter[sp] > t)
+                {
+                    continue;
+                }
+
+                int reference = stackRef[sp];
+                if (reference >= 0)
+                {
+                    current = reference;
+                    break;
+                }
+
+                int leaf = ~reference;
+                int first = _leafOffset[leaf], end = first + _leafCount[leaf];
+                for (int i = first; i < end; i++)
                 {
                     if (table.Intersect(i, ray, t, out double ti))
                     {
@@ -113,60 +151,145 @@ public sealed class Bvh : AccelerationStructure
                     }
                 }
             }
-
-            // Pop the next subtree that may still hold something closer than the best hit so far.
-            do
-            {
-                if (sp == 0)
-                {
-                    return hit;
-                }
-
-                current = stackNode[--sp];
-            }
-            while (stackEnter[sp] > t);
         }
     }
 
+    [SkipLocalsInit]
     private protected override bool TraverseAny(in Ray ray, double tMax)
     {
-        var r = new SlabRay(ray);
-        Span<int> stack = stackalloc int[MaxDepth + 4];
-        int sp = 0, current = 0;
-        BvhNode[] nodes = _nodes;
-        PrimitiveTable table = Table;
-
-        while (true)
+        if (_wide.Length == 0)
         {
-            ref BvhNode node = ref nodes[current];
-            if (r.Hits(ref node, tMax, out _))
+            return false;
+        }
+
+        var r = new WideRay(ray);
+        Bvh4Node[] nodes = _wide;
+        PrimitiveTable table = Table;
+        Span<int> stackRef = stackalloc int[StackSize];
+        int sp = 0;
+        stackRef[sp++] = 0;
+
+        while (sp > 0)
+        {
+            int reference = stackRef[--sp];
+            if (reference < 0)
             {
-                if (node.Count > 0)
+                int leaf = ~reference;
+                int first = _leafOffset[leaf], end = first + _leafCount[leaf];
+                for (int i = first; i < end; i++)
                 {
-                    int end = node.Offset + node.Count;
-                    for (int i = node.Offset; i < end; i++)
+                    if (table.Occludes(i, ray, tMax))
                     {
-                        if (table.Occludes(i, ray, tMax))
-                        {
-                            return true;
-                        }
+                        return true;
                     }
                 }
-                else
-                {
-                    stack[sp++] = node.Offset;
-                    current++;
-                    continue;
-                }
+
+                continue;
             }
 
-            if (sp == 0)
+            ref Bvh4Node node = ref nodes[reference];
+            int mask = r.Hits(ref node, tMax, out _);
+            while (mask != 0)
             {
-                return false;
+                int lane = BitOperations.TrailingZeroCount(mask);
+                mask &= mask - 1;
+                stackRef[sp++] = lane switch { 0 => node.Child0, 1 => node.Child1, 2 => node.Child2, _ => node.Child3 };
+            }
+        }
+
+        return false;
+    }
+
+    /// <summary>
+    /// Turns the binary subtree at <paramref name="binary"/> into a four-wide node: its children are
+    /// opened, largest surface area first, until there are four slots or only leaves remain.
+    /// </summary>
+    private int Collapse(int binary, List<Bvh4Node> wide, List<int> leafOffsets, List<int> leafCounts)
+    {
+        Span<int> slots = stackalloc int[4];
+        int count = 0;
+        BvhNode root = _nodes[binary];
+        if (root.Count > 0)
+        {
+            slots[count++] = binary;
+        }
+        else
+        {
+            slots[count++] = binary + 1;
+            slots[count++] = root.Offset;
+            while (count < 4)
+            {
+                int best = -1;
+                double bestArea = -1;
+                for (int i = 0; i < count; i++)
+                {
+                    BvhNode c = _nodes[slots[i]];
+                    if (c.Count == 0 && c.Bounds.SurfaceArea > bestArea)
+                    {
+                        bestArea = c.Bounds.SurfaceArea;
+                        best = i;
+                    }
+                }
+
+                if (best < 0)
+                {
+                    break;
+                }
+
+                int opened = slots[best];
+                slots[best] = opened + 1;
+                slots[count++] = _nodes[opened].Offset;
+            }
+        }
+
+        int index = wide.Count;
+        wide.Add(default);
+        Span<double> minX = stackalloc double[4], minY = stackalloc double[4], minZ = stackalloc double[4];
+        Span<double> maxX = stackalloc double[4], maxY = stackalloc double[4], maxZ = stackalloc double[4];
+        Span<int> refs = stackalloc int[4];
+        for (int i = 0; i < 4; i++)
+        {
+            if (i >= count)
+            {
+                minX[i] = minY[i] = minZ[i] = maxX[i] = maxY[i] = maxZ[i] = 0;
+                refs[i] = 0;
+                continue;
             }
 
-            current = stack[--sp];
+            BvhNode c = _nodes[slots[i]];
+            minX[i] = c.Bounds.Min.x;
+            minY[i] = c.Bounds.Min.y;
+            minZ[i] = c.Bounds.Min.z;
+            maxX[i] = c.Bounds.Max.x;
+            maxY[i] = c.Bounds.Max.y;
+            maxZ[i] = c.Bounds.Max.z;
+            if (c.Count > 0)
+            {
+                refs[i] = ~leafOffsets.Count;
+                leafOffsets.Add(c.Offset);
+                leafCounts.Add(c.Count);
+            }
+            else
+            {
+                refs[i] = Collapse(slots[i], wide, leafOffsets, leafCounts);
+            }
         }
+
+        wide[index] = new Bvh4Node
+        {
+            MinX = Vector256.Create(minX[0], minX[1], minX[2], minX[3]),
+            MinY = Vector256.Create(minY[0], minY[1], minY[2], minY[3]),
+            MinZ = Vector256.Create(minZ[0], minZ[1], minZ[2], minZ[3]),
+            MaxX = Vector256.Create(maxX[0], maxX[1], maxX[2], maxX[3]),
+            MaxY = Vector256.Create(maxY[0], maxY[1], maxY[2], maxY[3]),
+            MaxZ = Vector256.Create(maxZ[0], maxZ[1], maxZ[2], maxZ[3]),
+            Child0 = refs[0],
+            Child1 = refs[1],
+            Child2 = refs[2],
+            Child3 = refs[3],
+            ValidMask = (1 << count) - 1,
+        };
+        return index;
     }
 
     /// <summary>Builds the subtree over order[start..end) and returns its node index.</summary>
@@ -304,50 +427,45 @@ public sealed class Bvh : AccelerationStructure
         return left;
     }
 
-    /// <summary>Ray prepared for slab tests: reciprocal direction and, per axis, which box side is entered first.</summary>
-    private readonly struct SlabRay
+    /// <summary>Ray broadcast into vectors for testing four boxes at once.</summary>
+    private readonly struct WideRay
     {
-        private readonly double _ox, _oy, _oz, _ix, _iy, _iz;
-        private readonly bool _negX, _negY, _negZ;
+        private readonly Vector256<double> _ox, _oy, _oz, _ix, _iy, _iz;
 
-        public SlabRay(in Ray ray)
+        public WideRay(in Ray ray)
         {
-            _ox = ray.o.x;
-            _oy = ray.o.y;
-            _oz = ray.o.z;
-            _ix = 1.0 / ray.d.x;
-            _iy = 1.0 / ray.d.y;
-            _iz = 1.0 / ray.d.z;
-            _negX = _ix < 0;
-            _negY = _iy < 0;
-            _negZ = _iz < 0;
+            _ox = Vector256.Create(ray.o.x);
+            _oy = Vector256.Create(ray.o.y);
+            _oz = Vector256.Create(ray.o.z);
+            _ix = Vector256.Create(Reciprocal(ray.d.x));
+            _iy = Vector256.Create(Reciprocal(ray.d.y));
+            _iz = Vector256.Create(Reciprocal(ray.d.z));
         }
 
         /// <summary>
-        /// Whether the ray's segment [0, tMax] meets the node's box. The near/far sides are chosen from
-        /// the direction signs, so no swaps are needed; a NaN from 0 · ∞ fails the comparisons and
-        /// leaves the interval unchanged (a ray lying in a slab plane stays inside that slab).
+        /// Bit i set when the segment [0, tMax] meets child box i; <paramref name="enter"/> holds the entry distances.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public bool Hits(ref BvhNode node, double tMax, out double tEnter)
+        public int Hits(ref Bvh4Node node, double tMax, out Vector256<double> enter)
         {
-            ref BoundingBox b = ref node.Bounds;
-            double t0 = 0, t1 = tMax;
-            double near = ((_negX ? b.Max.x : b.Min.x) - _ox) * _ix;
-            double far = ((_negX ? b.Min.x : b.Max.x) - _ox) * _ix * FarSlack;
-            t0 = near > t0 ? near : t0;
-            t1 = far < t1 ? far : t1;
-            near = ((_negY ? b.Max.y : b.Min.y) - _oy) * _iy;
-            far = ((_negY ? b.Min.y : b.Max.y) - _oy) * _iy * FarSlack;
-            t0 = near > t0 ? near : t0;
-            t1 = far < t1 ? far : t1;
-            near = ((_negZ ? b.Max.z : b.Min.z) - _oz) * _iz;
-            far = ((_negZ ? b.Min.z : b.Max.z) - _oz) * _iz * FarSlack;
-            t0 = near > t0 ? near : t0;
-            t1 = far < t1 ? far : t1;
-            tEnter = t0;
-            return t0 <= t1;
+            Vector256<double> ax = (node.MinX - _ox) * _ix, bx = (node.MaxX - _ox) * _ix;
+            Vector256<double> ay = (node.MinY - _oy) * _iy, by = (node.MaxY - _oy) * _iy;
+            Vector256<double> az = (node.MinZ - _oz) * _iz, bz = (node.MaxZ - _oz) * _iz;
+            Vector256<double> t0 = Vector256.Max(
+                Vector256.Max(Vector256.Min(ax, bx), Vector256.Min(ay, by)),
+                Vector256.Max(Vector256.Min(az, bz), Vector256<double>.Zero));
+            Vector256<double> t1 = Vector256.Min(
+                Vector256.Min(Vector256.Max(ax, bx), Vector256.Max(ay, by)),
+                Vector256.Min(Vector256.Max(az, bz), Vector256.Create(tMax)));
+            enter = t0;
+            return (int)Vector256.LessThanOrEqual(t0, t1 * FarSlackVector).ExtractMostSignificantBits() & node.ValidMask;
         }
+
+        /// <summary>
+        /// 1/d with zero mapped to a huge finite value of the same sign: 0 · huge is 0 rather than NaN,
+        /// so a ray lying in a slab plane counts as inside that slab.
+        /// </summary>
+        private static double Reciprocal(double d) => d != 0 ? 1.0 / d : Math.CopySign(1e300, d);
     }
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
