@@ -77,10 +77,6 @@ public readonly record struct Interval(double Lower, double Upper)
     public Interval Abs() =>
         Lower >= 0 ? this : Upper <= 0 ? -this : new Interval(0, Math.Max(-Lower, Upper));
 
-    /// <summary>A monotone increasing function applied to both ends, rounded outward.</summary>
-    public Interval MapIncreasing(Func<double, double> f) =>
-        new(Math.BitDecrement(f(Lower)), Math.BitIncrement(f(Upper)));
-
     // An operation with a zero operand (x + 0, x · 0) or an infinite result is exact.
     private static double Down(double value, double x, double y) =>
         double.IsInfinity(value) || x == 0 || y == 0 ? value : Math.BitDecrement(value);

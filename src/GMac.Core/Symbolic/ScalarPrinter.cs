@@ -1,5 +1,4 @@
 using System.Text;
-using GMac.Core.Numerics;
 
 namespace GMac.Core.Symbolic;
 
@@ -107,7 +106,4 @@ internal static class ScalarPrinter
                 return;
         }
     }
-
-    /// <summary>Rational text as the parser reads it: "p" or "p/q".</summary>
-    public static string FormatRational(Rational value) => value.ToString();
 }
