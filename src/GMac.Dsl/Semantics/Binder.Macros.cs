@@ -397,7 +397,21 @@ internal sealed partial class Binder
                 if (Multivector(0) is not { } operand) return null;
                 var frame = operand.Type.Frame!;
                 var mask = 0;
-                for (var i = 1; i < args.Length; i++)
+                var fromModel = false;
+                // Thesis form: the grades of another multivector, cast_to_grades(A, B).
+                if (args.Length == 2 && args[1] is NameExprContext other && other.qualifiedName().name().Length == 1
+                    && context.Variables.ContainsKey(other.GetText()))
+                {
+                    if (BindExpression(args[1], scope) is not { } model) return null;
+                    if (model.Type.Frame is { } f && f != frame)
+                    {
+                        _diagnostics.ReportFrameMismatch(span, frame.Name, f.Name);
+                        return null;
+                    }
+                    mask = model.Type.GradeMask;
+                    fromModel = true;
+                }
+                for (var i = 1; i < args.Length && !fromModel; i++)
                 {
                     if (EvaluateInteger(args[i], "a grade") is not { } k) return null;
                     if (k < 0 || k > frame.Dimension)

@@ -144,7 +144,7 @@ public sealed class Parser_ThesisSyntax
                     lt = id[u];
                     un = grade_inv(m) + cliff_conj(m) + reverse(m) + scale(m, 2) + div_by_scalar(m, t.<1>)
                          + norm(u) + norm2(u) + quasi_norm(u) + quasi_norm2(u) + diff(m, t.<1>)
-                         + cast_to_grades(m, 0, 2) + cast_to_subspace(m, vectors) + cast_to_class(m, e3d.Vector)
+                         + cast_to_grades(m, 0, 2) + cast_to_grades(m, u) + cast_to_subspace(m, vectors) + cast_to_class(m, e3d.Vector)
                          + inverse(u) + dual(u) + undual(u) + grade(m, 2) + exp(o) + apply(u, v);
                     call Inner { a : u; b : z };
                     w = m + g + o + s + l + r + f + h + c + k + lt + un + Inner(v) + 2 * u / 3 - (u op v) lcp e3d.e1;
