@@ -31,6 +31,29 @@ public class AreaLight_Disk
         Assert.InRange(pixel.r, expected * 0.97, expected * 1.03);
     }
 
+    [Theory]
+    [InlineData("path")]
+    [InlineData("global")]
+    public void Path_and_global_tracers_agree_with_the_closed_form(string kind)
+    {
+        // Same disk light found by cosine-sampled bounces (path) or by explicit light sampling at the first
+        // hit with emitter hits after one bounce discarded (global): both must give kd · Le · R² / (h² + R²).
+        const double le = 3.0, radius = 1.0, height = 2.0, kd = 0.9;
+        var world = TestScenes.OrthographicWorld(1, 0.001, w => kind == "path" ? new PathTracer(w) : new GlobalTracer(w), samples: 16384);
+        var camera = new OrthographicCamera { Eye = new Point3D(0, 0, 1), LookAt = Point3D.Origin };
+        camera.ComputeUVW();
+        world.Camera = camera;
+        world.Add(new Plane(Point3D.Origin, new Normal3D(0, 0, 1)) { Material = new Matte(0, kd, RGBColor.White) });
+        var emitter = new Emissive(le);
+        var disk = new Disk(new Point3D(0, 0, height), new Normal3D(0, 0, -1), radius) { Material = emitter, CastsShadows = false };
+        world.Add(disk);
+        world.Add(new AreaLight(disk, emitter));
+
+        var pixel = new Renderer(new RenderOptions { Seed = 12 }).Render(world)[0, 0];
+        var expected = kd * le * radius * radius / (height * height + radius * radius);
+        Assert.InRange(pixel.r, expected * 0.95, expected * 1.05);
+    }
+
     [Fact]
     public void The_back_of_an_emitter_is_dark()
     {
