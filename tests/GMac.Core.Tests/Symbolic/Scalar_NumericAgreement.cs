@@ -16,6 +16,8 @@ public class Scalar_NumericAgreement
                 var point = trees.Point();
                 var expected = direct(point);
                 var actual = symbolic.Evaluate(RandomExpressionTrees.Lookup(point));
+                // Relative error; below magnitude 1 it is measured absolutely, because a function near a
+                // zero (cos close to pi/2) turns last-bit differences of its argument into large relative ones.
                 var error = Math.Abs(actual - expected) / Math.Max(1, Math.Abs(expected));
                 Assert.True(error <= 1e-12, $"{symbolic} at ({string.Join(", ", point)}): {actual} vs {expected}");
             }
