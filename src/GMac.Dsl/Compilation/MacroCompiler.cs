@@ -1,5 +1,6 @@
 using GMac.Core.Algebra;
 using GMac.Core.Symbolic;
+using GMac.Dsl.Diagnostics;
 using GMac.Dsl.Semantics;
 
 namespace GMac.Dsl.Compilation;
@@ -48,6 +49,24 @@ public sealed class MacroCompiler(CoreFrames frames)
 
     public IReadOnlyDictionary<VariableSymbol, Multivector<Scalar>> Compile(MacroSymbol macro,
         IReadOnlyDictionary<string, Scalar>? coefficientBindings = null) => Compile(macro, BindInputs(macro, coefficientBindings));
+
+    /// <summary>Compiles, turning an evaluation failure (e.g. the inverse of a null blade) into a diagnostic.</summary>
+    public bool TryCompile(MacroSymbol macro, IReadOnlyDictionary<string, Scalar>? coefficientBindings,
+        out IReadOnlyDictionary<VariableSymbol, Multivector<Scalar>> outputs, out Diagnostic? diagnostic)
+    {
+        try
+        {
+            outputs = Compile(macro, coefficientBindings);
+            diagnostic = null;
+            return true;
+        }
+        catch (MacroEvaluationException e)
+        {
+            outputs = new Dictionary<VariableSymbol, Multivector<Scalar>>();
+            diagnostic = DiagnosticBag.EvaluationError(e.Span, e.Message);
+            return false;
+        }
+    }
 
     /// <summary>
     /// <paramref name="relations"/> extended with ⟨A Ã⟩₀ = 1 for every input of a

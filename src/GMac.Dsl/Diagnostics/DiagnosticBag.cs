@@ -66,6 +66,10 @@ public sealed class DiagnosticBag
     public void ReportInvalidScalar(SourceSpan span, string message) =>
         Error("GMAC0130", span, $"invalid scalar expression: {message}");
 
+    // ---- evaluation
+    public static Diagnostic EvaluationError(SourceSpan span, string message) =>
+        new("GMAC0140", DiagnosticSeverity.Error, $"cannot evaluate: {message}", span);
+
     // ---- warnings
     public void ReportUnused(SourceSpan span, string kind, string name) =>
         Warning("GMAC0201", span, $"{kind} '{name}' is never used");

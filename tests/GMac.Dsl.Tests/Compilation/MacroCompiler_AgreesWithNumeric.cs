@@ -107,6 +107,25 @@ public sealed class MacroCompiler_AgreesWithNumeric
     }
 
     [Fact]
+    public void Inverse_of_a_null_vector_is_a_diagnostic_at_its_statement()
+    {
+        var project = DslProject.FromSources([
+            ("frames.gmac", File.ReadAllText(Path.Combine(RepositoryPaths.DslLibrary, "frames.gmac"))),
+            ("bad.gmac", """
+                define subspace cga5d.vectors as basis {no, e1, e2, e3, ni} end subspace
+                define multivector class cga5d.Vector as vectors end multivector class
+                define macro Bad as inputs: { x : cga5d.Vector } outputs: { y : cga5d.Vector } performs:
+                    y = x + inverse(cga5d.ni);
+                end macro
+                """)]);
+        Assert.Empty(project.Diagnostics);
+        var ok = new MacroCompiler(new CoreFrames()).TryCompile(project.Model.Macros["Bad"], null, out _, out var diagnostic);
+        Assert.False(ok);
+        Assert.Equal("GMAC0140", diagnostic!.Code);
+        Assert.Equal(("bad.gmac", 4), (diagnostic.Span.FilePath, diagnostic.Span.Line));
+    }
+
+    [Fact]
     public void Circle_curve_matches_equation_6_5()
     {
         var macro = Library.Value.Model.Macros["CircleCurvePoint"];
