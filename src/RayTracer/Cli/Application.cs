@@ -14,9 +14,9 @@ public static class Application
     public const string UsageText = """
         usage:
           raytracer list
-          raytracer render [SCENE] -o OUT.png [--width W] [--height H] [--spp N] [--seed S] [--threads T] [--max-depth D]
+          raytracer render [SCENE] -o OUT.png [--width W] [--height H] [--spp N] [--seed S] [--threads T] [--max-depth D] [--image IMG.png]
           raytracer bench [--triangles N] [--width W] [--height H] [--threads T]
-        SCENE defaults to 'spheres'; 'raytracer list' shows all scenes.
+        SCENE defaults to 'spheres'; 'raytracer list' shows all scenes. --image maps a PNG in texture-image.
         """;
 
     public static int Run(string[] args, TextWriter stdout, TextWriter stderr, bool interactiveProgress = false)
@@ -61,7 +61,7 @@ public static class Application
     private static int Render(string[] args, TextWriter stdout, TextWriter stderr, bool interactive)
     {
         var options = new OptionReader(args, Aliases,
-            new HashSet<string> { "--output", "--width", "--height", "--spp", "--seed", "--threads", "--max-depth" });
+            new HashSet<string> { "--output", "--width", "--height", "--spp", "--seed", "--threads", "--max-depth", "--image" });
         if (options.Positionals.Count > 1)
             throw new UsageException($"render takes one scene name, got: {string.Join(' ', options.Positionals)}");
         var sceneName = options.Positionals.Count == 1 ? options.Positionals[0] : SceneFactory.DefaultSceneName;
@@ -74,11 +74,14 @@ public static class Application
             Height = options.GetInt("--height", 1, 16384),
             SamplesPerPixel = options.GetInt("--spp", 1, 65536),
             MaxDepth = options.GetInt("--max-depth", 0, 1000),
+            ImagePath = options.GetString("--image"),
         };
         var seed = options.GetULong("--seed") ?? 0;
         var threads = options.GetInt("--threads", 1, 1024) ?? Environment.ProcessorCount;
         if (!SceneFactory.TryCreate(sceneName, out var scene))
             throw new UsageException($"unknown scene '{sceneName}' (run 'raytracer list' to see the scenes)");
+        if (settings.ImagePath is not null && !scene.UsesImage)
+            throw new UsageException($"scene '{scene.Name}' has no image texture; --image applies to texture-image");
 
         World world;
         try

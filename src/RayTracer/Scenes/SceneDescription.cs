@@ -21,9 +21,16 @@ public abstract class SceneDescription
     public virtual int DefaultSamples => 16;
     public virtual int DefaultMaxDepth => 5;
 
+    /// <summary>True for scenes that map a user-supplied PNG (<see cref="SceneSettings.ImagePath"/>).</summary>
+    public virtual bool UsesImage => false;
+
+    /// <summary>The settings of the current <see cref="Build"/> call.</summary>
+    protected SceneSettings Settings { get; private set; } = new();
+
     public World Build(SceneSettings? settings = null)
     {
         settings ??= new SceneSettings();
+        Settings = settings;
         var world = new World
         {
             ViewPlane = new ViewPlane

@@ -7,4 +7,7 @@ public sealed record SceneSettings
     public int? Height { get; init; }
     public int? SamplesPerPixel { get; init; }
     public int? MaxDepth { get; init; }
+
+    /// <summary>PNG for scenes that show an image texture (<see cref="SceneDescription.UsesImage"/>).</summary>
+    public string? ImagePath { get; init; }
 }

@@ -81,6 +81,29 @@ public sealed class Application_Commands : IDisposable
     }
 
     [Fact]
+    public void Image_option_maps_a_png_and_reports_a_bad_one_by_name()
+    {
+        var texture = Path.Combine(_dir, "texture.png");
+        var image = new PixelImage(4, 2, 3);
+        Array.Fill(image.Data, (byte)200);
+        PngEncoder.Save(image, texture);
+        var good = Path.Combine(_dir, "good.png");
+        Assert.Equal(0, Run("render", "texture-image", "-o", good, "--width", "8", "--height", "6", "--spp", "1", "--image", texture).Code);
+        Assert.True(File.Exists(good));
+
+        var broken = Path.Combine(_dir, "broken.png");
+        File.WriteAllBytes(broken, File.ReadAllBytes(texture)[..30]);
+        var output = Path.Combine(_dir, "never.png");
+        var (code, _, err) = Run("render", "texture-image", "-o", output, "--width", "8", "--height", "6", "--image", broken);
+        Assert.Equal(1, code);
+        Assert.Contains(broken, err);
+        Assert.False(File.Exists(output));
+
+        Assert.Equal(2, Run("render", "spheres", "-o", output, "--image", texture).Code);
+        Assert.False(File.Exists(output));
+    }
+
+    [Fact]
     public void Unwritable_output_is_a_failure_not_a_crash()
     {
         var blocker = Path.Combine(_dir, "file");

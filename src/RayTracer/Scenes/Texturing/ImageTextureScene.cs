@@ -14,15 +14,14 @@ namespace RayTracer.Scenes.Texturing;
 /// <summary>
 /// One image on a sphere (spherical map), a cylinder (cylindrical map) and a square (rectangular map). The
 /// image is drawn in code and passed through the PNG encoder and decoder, so the scene needs no files;
-/// <see cref="ImagePath"/> can point at a PNG instead.
+/// <see cref="SceneSettings.ImagePath"/> can point at a PNG instead.
 /// </summary>
 public sealed class ImageTextureScene : SceneDescription
 {
     public override string Name => "texture-image";
     public override string Description => "PNG image texture with spherical, cylindrical and rectangular mappings.";
 
-    /// <summary>Optional PNG to use instead of the built-in test card.</summary>
-    public string? ImagePath { get; init; }
+    public override bool UsesImage => true;
 
     /// <summary>A labelled test card: colour bands by longitude, darker towards the poles, a grid every 1/8.</summary>
     public static PixelImage TestCard(int width = 256, int height = 128)
@@ -49,7 +48,8 @@ public sealed class ImageTextureScene : SceneDescription
 
     protected override void Populate(World world)
     {
-        var image = ImagePath is null ? PngDecoder.Decode(PngEncoder.Encode(TestCard())) : PngDecoder.Load(ImagePath);
+        var path = Settings.ImagePath;
+        var image = path is null ? PngDecoder.Decode(PngEncoder.Encode(TestCard())) : PngDecoder.Load(path);
         world.BackgroundColor = new RGBColor(0.12, 0.12, 0.14);
         world.AmbientLight = new AmbientLight(0.5);
         world.Add(new Plane(Point3D.Origin, new Normal3D(0, 1, 0)) { Material = MaterialFactory.Matte(new RGBColor(0.6, 0.6, 0.6)) });
