@@ -143,7 +143,8 @@ public sealed class Bvh : AccelerationStructure
                 int first = _leafOffset[leaf], end = first + _leafCount[leaf];
                 for (int i = first; i < end; i++)
                 {
-                    if (table.Intersect(i, ray, t, out double ti))
+                    double ti = table.Distance(i, ray, t);
+                    if (ti < t)
                     {
                         t = ti;
                         primitive = i;

@@ -110,6 +110,19 @@ internal sealed class PrimitiveTable
         return Objects[i].Intersect(ray, out t) && t < tMax;
     }
 
+    /// <summary>Hit distance below tMax, or +∞.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public double Distance(int i, in Ray ray, double tMax)
+    {
+        if (_isTriangle[i])
+        {
+            ref PackedTriangle tri = ref _triangles[i];
+            return TriangleSolver.Distance(ray, tri.V0, tri.E1, tri.E2, tMax);
+        }
+
+        return Objects[i].Intersect(ray, out double t) && t < tMax ? t : double.PositiveInfinity;
+    }
+
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public bool Occludes(int i, in Ray ray, double tMax)
     {
