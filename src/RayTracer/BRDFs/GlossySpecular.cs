@@ -40,7 +40,7 @@ public sealed class GlossySpecular : BRDF
     {
         get => LazyInitializer.EnsureInitialized(ref _sampler, () =>
         {
-            var s = new MultiJitteredSampler(64);
+            var s = new MultiJitteredSampler(64, seed: SamplerSeeds.Glossy);
             s.MapSamplesToHemisphere(_exponent);
             return s;
         });

@@ -40,7 +40,7 @@ public sealed class Lambertian : BRDF
 
     private static Sampler CreateDefaultSampler()
     {
-        var s = new MultiJitteredSampler(64);
+        var s = new MultiJitteredSampler(64, seed: SamplerSeeds.Diffuse);
         s.MapSamplesToHemisphere(1);
         return s;
     }

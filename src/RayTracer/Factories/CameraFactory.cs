@@ -1,3 +1,4 @@
+using RayTracer.Sampling;
 using RayTracer.Util;
 using RayTracer.Viewing;
 
@@ -29,6 +30,7 @@ public static class CameraFactory
         var camera = new ThinLensCamera
         {
             Eye = eye, LookAt = lookAt, ViewDistance = viewDistance, FocalDistance = focalDistance, LensRadius = lensRadius,
+            LensSampler = new MultiJitteredSampler(vp.NumSamples, seed: SamplerSeeds.Lens),
         };
         camera.ComputeUVW();
         return camera;

@@ -16,7 +16,7 @@ public static class LightFactory
     public static DirectionalLight Directional(Vector3D towardsLight, double radiance, RGBColor? color = null) => new(towardsLight, radiance, color);
 
     public static AmbientOccluder AmbientOcclusion(int samples, double radiance = 1.0, double minAmount = 0.0) =>
-        new(new MultiJitteredSampler(samples), radiance, null, minAmount);
+        new(new MultiJitteredSampler(samples, seed: SamplerSeeds.AmbientOcclusion), radiance, null, minAmount);
 
     /// <summary>Adds an emissive object as an area light; the object does not cast shadows on its own light.</summary>
     public static AreaLight AddAreaLight(World world, GeometricObject shape, double radiance, RGBColor? color = null)
@@ -25,7 +25,7 @@ public static class LightFactory
         shape.Material = emitter;
         shape.CastsShadows = false;
         world.Add(shape);
-        var light = new AreaLight(shape, emitter, new MultiJitteredSampler(world.ViewPlane.NumSamples));
+        var light = new AreaLight(shape, emitter, new MultiJitteredSampler(world.ViewPlane.NumSamples, seed: SamplerSeeds.AreaLight + (ulong)world.Lights.Count));
         world.Add(light);
         return light;
     }
@@ -42,7 +42,7 @@ public static class LightFactory
     /// <summary>Uniform sky: lights the scene (sampled) and is seen by rays that escape.</summary>
     public static EnvironmentLight AddEnvironment(World world, double radiance, RGBColor? color = null, int samples = 64)
     {
-        var light = new EnvironmentLight(new MultiJitteredSampler(samples), radiance, color);
+        var light = new EnvironmentLight(new MultiJitteredSampler(samples, seed: SamplerSeeds.Environment), radiance, color);
         world.Environment = light;
         world.Add(light);
         return light;

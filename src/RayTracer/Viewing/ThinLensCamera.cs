@@ -13,7 +13,7 @@ public sealed class ThinLensCamera : Camera
 
     public ThinLensCamera()
     {
-        _lensSampler = new MultiJitteredSampler(16);
+        _lensSampler = new MultiJitteredSampler(16, seed: SamplerSeeds.Lens);
         _lensSampler.MapSamplesToUnitDisk();
     }
 

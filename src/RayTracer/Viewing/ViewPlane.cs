@@ -47,5 +47,5 @@ public sealed class ViewPlane
 
     /// <summary>Multi-jittered sampling with <paramref name="samples"/> per pixel (a single sample is the pixel centre).</summary>
     public void SetSamples(int samples) =>
-        Sampler = samples <= 1 ? new RegularSampler(1) : new MultiJitteredSampler(samples);
+        Sampler = samples <= 1 ? new RegularSampler(1) : new MultiJitteredSampler(samples, seed: SamplerSeeds.Pixel);
 }
