@@ -7,7 +7,7 @@ public sealed class CallExpr : Expr
 
     public string Function { get; }
 
-    public CallExpr(string function, IReadOnlyList<Expr> arguments) : base(HashCode.Combine(CombineHashes(8, arguments), function))
+    public CallExpr(string function, IReadOnlyList<Expr> arguments) : base(StableHash.Combine(CombineHashes(8, arguments), StableHash.Of(function)))
     {
         Function = function;
         _arguments = arguments.ToArray();

@@ -8,7 +8,7 @@ public sealed class ConstantExpr : Expr
     public double Value { get; }
     public Rational? Exact { get; }
 
-    public ConstantExpr(double value, Rational? exact = null) : base(HashCode.Combine(1, value))
+    public ConstantExpr(double value, Rational? exact = null) : base(StableHash.Combine(1, StableHash.Of(value)))
     {
         Value = value;
         Exact = exact;

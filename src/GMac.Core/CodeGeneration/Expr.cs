@@ -37,12 +37,12 @@ public abstract class Expr : IEquatable<Expr>
     /// <summary>Equality of the node itself, children aside.</summary>
     protected abstract bool SameNode(Expr other);
 
+    /// <summary>A deterministic hash of a node kind and its children.</summary>
     protected static int CombineHashes(int seed, IEnumerable<Expr> children)
     {
-        var h = new HashCode();
-        h.Add(seed);
-        foreach (var c in children) h.Add(c._hash);
-        return h.ToHashCode();
+        var h = seed;
+        foreach (var c in children) h = StableHash.Combine(h, c._hash);
+        return h;
     }
 
     /// <summary>Rebuilds the tree bottom-up through a rewrite applied to every node after its children.</summary>

@@ -11,6 +11,7 @@ public static class ExprFactory
 {
     public static Expr Constant(double value) => new ConstantExpr(value);
     public static Expr Constant(Rational value) => ConstantExpr.From(value);
+    public static Expr Constant(int value) => ConstantExpr.From(value);
     public static Expr Variable(string name) => new VariableExpr(name);
 
     public static Expr Negate(Expr e) => e switch
@@ -25,6 +26,7 @@ public static class ExprFactory
         var flat = new List<Expr>();
         ConstantAccumulator constant = default;
         foreach (var t in terms) AddTerm(flat, ref constant, t, negate: false);
+        CancelOpposites(flat);
         if (!constant.IsZero) flat.Add(constant.ToExpr());
         return flat.Count switch
         {
@@ -35,6 +37,21 @@ public static class ExprFactory
     }
 
     public static Expr Sum(params Expr[] terms) => Sum((IEnumerable<Expr>)terms);
+
+    /// <summary>Removes pairs t, −t from a flattened sum (b − b is 0).</summary>
+    private static void CancelOpposites(List<Expr> flat)
+    {
+        if (flat.Count < 2) return;
+        for (var i = 0; i < flat.Count; i++)
+        {
+            var opposite = flat[i] is NegateExpr n ? n.Operand : new NegateExpr(flat[i]);
+            var j = flat.FindIndex(i + 1, e => e.Equals(opposite));
+            if (j < 0) continue;
+            flat.RemoveAt(j);
+            flat.RemoveAt(i);
+            i--;
+        }
+    }
 
     public static Expr Difference(Expr a, Expr b) => Sum(a, Negate(b));
 
@@ -72,6 +89,15 @@ public static class ExprFactory
             negative = !negative;
         }
         if (!constant.IsOne) flat.Insert(0, constant.ToExpr());
+        // x · (1/d) is x / d: one multiplication fewer (a shared reciprocal read only once ends up here)
+        var reciprocal = flat.FindIndex(f => f is QuotientExpr { Numerator: ConstantExpr { Value: 1 } });
+        if (reciprocal >= 0 && flat.Count >= 2)
+        {
+            var denominator = ((QuotientExpr)flat[reciprocal]).Denominator;
+            flat.RemoveAt(reciprocal);
+            var quotient = Quotient(Product(flat), denominator);
+            return negative ? Negate(quotient) : quotient;
+        }
         Expr result = flat.Count switch
         {
             0 => ConstantExpr.One,

@@ -6,7 +6,7 @@ public sealed class PowerExpr : Expr
     public Expr Base { get; }
     public int Exponent { get; }
 
-    public PowerExpr(Expr @base, int exponent) : base(HashCode.Combine(CombineHashes(7, [@base]), exponent))
+    public PowerExpr(Expr @base, int exponent) : base(StableHash.Combine(CombineHashes(7, [@base]), exponent))
     {
         Base = @base;
         Exponent = exponent;

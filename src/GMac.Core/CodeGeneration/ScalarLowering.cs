@@ -26,10 +26,10 @@ public static class ScalarLowering
         // A numeric factor common to all terms: 2xy − 2wz → 2(xy − wz).
         var magnitude = terms[0].Coefficient.Abs();
         if (!magnitude.IsOne && terms.All(t => t.Coefficient.Abs() == magnitude))
-            return ExprFactory.Product(ConstantExpr.From(magnitude), LowerSum(terms.Select(t => t with { Coefficient = t.Coefficient / magnitude }).ToList()));
+            return FactorCoefficient(terms, magnitude);
 
         var best = BestSharedAtom(terms);
-        if (best is null) return ExprFactory.Sum(terms.Select(LowerTerm));
+        if (best is null) return LowerByCoefficientGroups(terms);
 
         var with = new List<PolyTerm>();
         var without = new List<PolyTerm>();
@@ -47,6 +47,31 @@ public static class ScalarLowering
             ? ExprFactory.Quotient(LowerSum(with), Lower(best.Arguments[0]))
             : ExprFactory.Product(LowerAtom(best), LowerSum(with));
         return without.Count == 0 ? factored : ExprFactory.Sum(factored, LowerSum(without));
+    }
+
+    /// <summary>
+    /// With no atom to share, terms with the same coefficient magnitude share it instead:
+    /// 1 − 2y² − 2z² → 1 − 2(y² + z²), one product fewer.
+    /// </summary>
+    private static Expr LowerByCoefficientGroups(List<PolyTerm> terms)
+    {
+        var group = terms.Where(t => !t.Coefficient.Abs().IsOne)
+            .GroupBy(t => t.Coefficient.Abs())
+            .Where(g => g.Count() >= 2)
+            .OrderByDescending(g => g.Count())
+            .FirstOrDefault();
+        if (group is null) return ExprFactory.Sum(terms.Select(LowerTerm));
+        var magnitude = group.Key;
+        var grouped = FactorCoefficient(group.ToList(), magnitude);
+        var others = terms.Where(t => t.Coefficient.Abs() != magnitude).ToList();
+        return others.Count == 0 ? grouped : ExprFactory.Sum(grouped, LowerSum(others));
+    }
+
+    /// <summary>c·(Σ tᵢ/c), with c taking the sign when every term is negative: −2y² − 2z² → −2(y² + z²).</summary>
+    private static Expr FactorCoefficient(List<PolyTerm> terms, Rational magnitude)
+    {
+        var factor = terms.All(t => t.Coefficient.Sign < 0) ? -magnitude : magnitude;
+        return ExprFactory.Product(ConstantExpr.From(factor), LowerSum(terms.Select(t => t with { Coefficient = t.Coefficient / factor }).ToList()));
     }
 
     /// <summary>The atom with a positive power in the most terms (at least two), ties to the canonical order.</summary>

@@ -5,7 +5,7 @@ public sealed class VariableExpr : Expr
 {
     public string Name { get; }
 
-    public VariableExpr(string name) : base(HashCode.Combine(2, name)) => Name = name;
+    public VariableExpr(string name) : base(StableHash.Combine(2, StableHash.Of(name))) => Name = name;
 
     public override IReadOnlyList<Expr> Children => [];
     public override Expr WithChildren(IReadOnlyList<Expr> children) => this;

@@ -28,19 +28,39 @@ public sealed class CommonSubexpressionPass(Func<int, string> temporaryName) : I
         return block;
     }
 
-    /// <summary>The canonical member of {e, −e}, so both count as one subexpression.</summary>
-    private static (Expr Key, bool Negated) Canonical(Expr e)
+    private readonly Dictionary<Expr, Expr> _keys = new();
+
+    /// <summary>The node with sums and products in a fixed order, so a·b and b·a share one key.</summary>
+    private Expr Key(Expr e)
     {
-        if (e is NegateExpr n) return (n.Operand, true);
-        if (e is SumExpr)
-        {
-            var negated = ExprFactory.Negate(e) is var ne && ne is SumExpr ? ne : null;
-            if (negated is not null && negated.GetHashCode() < e.GetHashCode()) return (negated, true);
-        }
-        return (e, false);
+        if (e.IsLeaf) return e;
+        if (_keys.TryGetValue(e, out var key)) return key;
+        var children = e.Children.Select(Key).ToList();
+        if (e is SumExpr or ProductExpr)
+            children = children.OrderBy(c => c.GetHashCode()).ThenBy(c => c.ToString(), StringComparer.Ordinal).ToList();
+        key = e.WithChildren(children);
+        _keys[e] = key;
+        return key;
     }
 
-    private static Expr? FindBest(CodeBlock block)
+    /// <summary>The key shared by e and −e, and whether e is the negated one (a − b and b − a).</summary>
+    private (Expr Key, bool Negated) Canonical(Expr e)
+    {
+        if (e is NegateExpr n)
+        {
+            var (k, negated) = Canonical(n.Operand);
+            return (k, !negated);
+        }
+        var key = Key(e);
+        if (e is not SumExpr) return (key, false);
+        var opposite = Key(ExprFactory.Sum(e.Children.Select(ExprFactory.Negate)));
+        var oppositeFirst = opposite.GetHashCode() != key.GetHashCode()
+            ? opposite.GetHashCode() < key.GetHashCode()
+            : string.CompareOrdinal(opposite.ToString(), key.ToString()) < 0;
+        return oppositeFirst ? (opposite, true) : (key, false);
+    }
+
+    private Expr? FindBest(CodeBlock block)
     {
         var counts = new Dictionary<Expr, int>();
         foreach (var s in block.Statements)
@@ -73,26 +93,24 @@ public sealed class CommonSubexpressionPass(Func<int, string> temporaryName) : I
         return block.Statistics().Cost;
     }
 
-    private static CodeBlock Extract(CodeBlock block, Expr target, string name)
+    private CodeBlock Extract(CodeBlock block, Expr key, string name)
     {
-        var negatedTarget = ExprFactory.Negate(target);
         var variable = ExprFactory.Variable(name);
+        bool Matches(Expr node) => !node.IsLeaf && node is not NegateExpr && Canonical(node).Key.Equals(key);
         Expr Replace(Expr root) => root.Rewrite(node =>
-            node.Equals(target) ? variable
-            : !node.IsLeaf && node.Equals(negatedTarget) ? ExprFactory.Negate(variable)
+            Matches(node) ? (Canonical(node).Negated ? ExprFactory.Negate(variable) : variable)
             : node.IsLeaf ? node : ExprFactory.Normalize(node));
 
         var result = new List<CodeStatement>();
         var inserted = false;
         foreach (var s in block.Statements)
         {
-            if (!inserted && s.Expressions.Any(e => e.DescendantsAndSelf().Any(n => n.Equals(target) || n.Equals(negatedTarget))))
+            if (!inserted && s.Expressions.Any(e => e.DescendantsAndSelf().Any(Matches)))
             {
-                result.Add(new AssignmentStatement(name, target, false));
+                result.Add(new AssignmentStatement(name, key, false));
                 inserted = true;
             }
-            var exprs = s.Expressions.Select(Replace).ToArray();
-            result.Add(s.WithExpressions(exprs));
+            result.Add(s.WithExpressions(s.Expressions.Select(Replace).ToArray()));
         }
         return block.WithStatements(result);
     }

@@ -16,8 +16,38 @@ public sealed class StrengthReductionPass(Func<int, string> temporaryName) : IOp
 
     public CodeBlock Run(CodeBlock block)
     {
+        block = NamePoweredSubexpressions(block);
         block = BlockRewriting.MapExpressions(block, e => e.Rewrite(ReducePower));
         return ShareReciprocals(block);
+    }
+
+    /// <summary>
+    /// (a·b + c)² must become t·t with t = a·b + c computed once, not the expanded product of its
+    /// factors, so a power of anything but a variable is named first.
+    /// </summary>
+    private CodeBlock NamePoweredSubexpressions(CodeBlock block)
+    {
+        var taken = new HashSet<string>(block.Statements.OfType<AssignmentStatement>().Select(a => a.Target), StringComparer.Ordinal);
+        var named = new Dictionary<Expr, Expr>();
+        var result = new List<CodeStatement>();
+        foreach (var s in block.Statements)
+        {
+            var exprs = s.Expressions.Select(e => e.Rewrite(node =>
+            {
+                if (node is not PowerExpr { Base.IsLeaf: false } p || Math.Abs(p.Exponent) > LargestExpandedPower) return node.IsLeaf ? node : ExprFactory.Normalize(node);
+                if (!named.TryGetValue(p.Base, out var variable))
+                {
+                    string name;
+                    do name = temporaryName(_counter++); while (!taken.Add(name));
+                    variable = ExprFactory.Variable(name);
+                    named[p.Base] = variable;
+                    result.Add(new AssignmentStatement(name, p.Base, false));
+                }
+                return new PowerExpr(variable, p.Exponent);
+            })).ToArray();
+            result.Add(s.WithExpressions(exprs));
+        }
+        return named.Count == 0 ? block : block.WithStatements(result);
     }
 
     private static Expr ReducePower(Expr node)

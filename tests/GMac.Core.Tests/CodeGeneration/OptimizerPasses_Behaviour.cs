@@ -1,0 +1,157 @@
+using GMac.Core.CodeGeneration;
+using GMac.Core.CodeGeneration.Passes;
+using static GMac.Core.CodeGeneration.ExprFactory;
+
+namespace GMac.Core.Tests.CodeGeneration;
+
+public class OptimizerPasses_Behaviour
+{
+    private static readonly Expr A = Variable("a"), B = Variable("b"), C = Variable("c"), D = Variable("d");
+
+    private static CodeBlock Block(params CodeStatement[] statements) =>
+        new(statements,
+            new[] { "a", "b", "c", "d" }.ToDictionary(k => k, k => k, StringComparer.Ordinal),
+            statements.OfType<AssignmentStatement>().Where(s => s.IsOutput).ToDictionary(s => s.Target, s => s.Target, StringComparer.Ordinal));
+
+    private static AssignmentStatement Temp(string name, Expr value) => new(name, value, false);
+    private static AssignmentStatement Out(string name, Expr value) => new(name, value, true);
+
+    /// <summary>Every pass must keep the outputs' values: checked on random inputs.</summary>
+    private static void AssertSameOutputs(CodeBlock before, CodeBlock after)
+    {
+        var random = new Random(80);
+        for (var i = 0; i < 20; i++)
+        {
+            var inputs = new[] { "a", "b", "c", "d" }.ToDictionary(k => k, _ => random.NextDouble() * 4 + 0.5, StringComparer.Ordinal);
+            var expected = before.Evaluate(inputs);
+            var actual = after.Evaluate(inputs);
+            Assert.Equal(expected.Keys.Order(), actual.Keys.Order());
+            foreach (var (k, v) in expected)
+                Assert.True(Math.Abs(v - actual[k]) <= 1e-11 * Math.Max(1, Math.Abs(v)), $"{k}: {v} before, {actual[k]} after");
+        }
+    }
+
+    [Fact]
+    public void ConstantFolding_FoldsAndPropagates()
+    {
+        var block = Block(
+            Temp("t", Sum(Product(Constant(2), Constant(3)), Call("sqrt", Constant(4)))),
+            Out("o", Product(Variable("t"), A)));
+        var folded = new ConstantFoldingPass().Run(block);
+        Assert.Empty(folded.Temporaries);
+        Assert.Equal("8.0 * a", folded.Outputs.Single().Value.ToString());
+        AssertSameOutputs(block, folded);
+    }
+
+    [Fact]
+    public void CopyPropagation_ReadsTheCopiedVariable()
+    {
+        var block = Block(Temp("t", Negate(A)), Out("o", Product(Variable("t"), B)));
+        var result = new CopyPropagationPass().Run(block);
+        Assert.Empty(result.Temporaries);
+        Assert.Equal("-(a * b)", result.Outputs.Single().Value.ToString());
+        AssertSameOutputs(block, result);
+    }
+
+    [Fact]
+    public void InlineSingleUse_SubstitutesWithoutExpanding()
+    {
+        var block = Block(Temp("t", Sum(A, B)), Out("o", Product(Variable("t"), C)));
+        var result = new InlineSingleUsePass().Run(block);
+        Assert.Empty(result.Temporaries);
+        Assert.Equal("(a + b) * c", result.Outputs.Single().Value.ToString());
+        Assert.Equal(1, result.Statistics().Multiplications);
+        AssertSameOutputs(block, result);
+    }
+
+    [Fact]
+    public void InlineSingleUse_KeepsSharedTemporaries()
+    {
+        var block = Block(Temp("t", Sum(A, B)), Out("o1", Product(Variable("t"), C)), Out("o2", Product(Variable("t"), D)));
+        Assert.Single(new InlineSingleUsePass().Run(block).Temporaries);
+    }
+
+    [Fact]
+    public void CommonSubexpressions_BecomeOneTemporary_IncludingNegatedDifferences()
+    {
+        var block = Block(
+            Out("o1", Product(Difference(A, B), C)),
+            Out("o2", Product(Difference(B, A), D)),
+            Out("o3", Sum(Product(Difference(A, B), C), D)));
+        var result = new CommonSubexpressionPass().Run(block);
+        Assert.True(result.Statistics().Operations < block.Statistics().Operations, result.ToString());
+        // t = a − b; p = t·c; o1 = p; o2 = −t·d; o3 = p + d: four operations instead of seven
+        Assert.Equal(4, result.Statistics().Operations);
+        Assert.Equal(2, result.Temporaries.Count());
+        AssertSameOutputs(block, result);
+    }
+
+    [Fact]
+    public void DeadCode_RemovesUnreadTemporaries()
+    {
+        var block = Block(Temp("t", Sum(A, B)), Temp("u", Product(Variable("t"), C)), Out("o", D));
+        var result = new DeadCodePass().Run(block);
+        Assert.Single(result.Statements);
+        AssertSameOutputs(block, result);
+    }
+
+    [Fact]
+    public void StrengthReduction_TurnsPowersIntoProducts_AndSharesReciprocals()
+    {
+        var s = Sum(A, B);
+        var block = Block(
+            Out("o1", Power(C, 2)),
+            Out("o2", Quotient(C, s)),
+            Out("o3", Quotient(D, s)),
+            Out("o4", Quotient(A, Constant(4))));
+        var result = new StrengthReductionPass().Run(block);
+        var stats = result.Statistics();
+        Assert.Equal(1, stats.Divisions); // one reciprocal of a + b, read twice
+        Assert.Contains(result.Outputs, o => o.Value.ToString() == "c * c");
+        Assert.Contains(result.Outputs, o => o.Value.ToString() == "0.25 * a");
+        AssertSameOutputs(block, result);
+    }
+
+    [Fact]
+    public void TemporaryReuse_GivesNamesBack_AfterTheirLastRead()
+    {
+        var block = Block(
+            Temp("t1", Sum(A, B)),
+            Temp("t2", Product(Variable("t1"), Variable("t1"))),
+            Temp("t3", Sum(C, D)),
+            Temp("t4", Product(Variable("t3"), Variable("t3"))),
+            Out("o", Sum(Variable("t2"), Variable("t4"))));
+        var result = new TemporaryReusePass().Run(block);
+        var names = result.Temporaries.Select(t => t.Target).Distinct().Count();
+        Assert.True(names < 4, result.ToString());
+        AssertSameOutputs(block, result);
+    }
+
+    [Fact]
+    public void Optimizer_KeepsValues_OnRandomBlocks()
+    {
+        var random = new Random(81);
+        Expr Leaf() => random.Next(5) switch { 0 => A, 1 => B, 2 => C, 3 => D, _ => Constant(random.Next(1, 5)) };
+        Expr Tree(int depth) => depth == 0 ? Leaf() : random.Next(6) switch
+        {
+            0 => Sum(Tree(depth - 1), Tree(depth - 1)),
+            1 => Difference(Tree(depth - 1), Tree(depth - 1)),
+            2 => Product(Tree(depth - 1), Tree(depth - 1)),
+            3 => Quotient(Tree(depth - 1), Sum(Tree(depth - 1), Constant(10))),
+            4 => Power(Tree(depth - 1), 2),
+            _ => Call("sqrt", Sum(Power(Tree(depth - 1), 2), Constant(1))),
+        };
+        for (var trial = 0; trial < 30; trial++)
+        {
+            var shared = Tree(2);
+            var block = Block(
+                Temp("t", shared),
+                Out("o1", Sum(Tree(3), Product(Variable("t"), Tree(1)))),
+                Out("o2", Difference(Tree(3), Variable("t"))),
+                Out("o3", Product(shared, Tree(2))));
+            var optimized = Optimizer.Optimize(block, reuseTemporaries: true);
+            AssertSameOutputs(block, optimized);
+            Assert.True(optimized.Statistics().Cost <= block.Statistics().Cost, $"{block}\n=>\n{optimized}");
+        }
+    }
+}
