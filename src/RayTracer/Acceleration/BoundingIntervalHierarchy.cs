@@ -156,11 +156,15 @@ public sealed class BoundingIntervalHierarchy : AccelerationStructure
                             return;
                         }
                     }
-                    else if (table.Intersect(i, ray, tBest, out double ti))
+                    else
                     {
-                        tBest = ti;
-                        best = i;
-                        hit = true;
+                        double ti = table.Distance(i, ray, tBest);
+                        if (ti < tBest)
+                        {
+                            tBest = ti;
+                            best = i;
+                            hit = true;
+                        }
                     }
                 }
             }

@@ -308,28 +308,46 @@ public sealed class Bvh : AccelerationStructure
         int index = nodes.Count;
         nodes.Add(new BvhNode { Bounds = box });
         int count = end - start;
-        int axis = centroidBox.LongestAxis;
-        double lo = centroidBox.Min[axis], hi = centroidBox.Max[axis];
+        int longest = centroidBox.LongestAxis;
+        Vector3D extent = centroidBox.Diagonal;
 
-        if (count <= 1 || depth >= MaxDepth || !(hi > lo))
+        if (count <= 1 || depth >= MaxDepth || !(extent[longest] > 0))
         {
             if (count > MaxLeafSize && depth < MaxDepth && count > 1)
             {
                 // All centroids coincide: split the range in half to keep leaves small.
                 int half = start + count / 2;
-                return MakeInterior(nodes, order, index, start, half, end, depth, axis, box);
+                return MakeInterior(nodes, order, index, start, half, end, depth, longest, box);
             }
 
             return MakeLeaf(nodes, index, start, count, box);
         }
 
-        int mid = FindSahSplit(order, start, end, axis, lo, hi, box, out bool makeLeaf);
-        if (makeLeaf && count <= MaxLeafSize)
+        // Binned SAH on every axis with a spread of centroids; the cheapest plane wins.
+        double bestCost = double.PositiveInfinity;
+        int bestAxis = longest, bestBin = 1;
+        for (int axis = 0; axis < 3; axis++)
+        {
+            if (extent[axis] > 0)
+            {
+                double cost = EvaluateSah(order, start, end, axis, centroidBox.Min[axis], centroidBox.Max[axis], out int bin);
+                if (cost < bestCost)
+                {
+                    bestCost = cost;
+                    bestAxis = axis;
+                    bestBin = bin;
+                }
+            }
+        }
+
+        double splitCost = TraversalCost + IntersectionCost * bestCost / Math.Max(box.SurfaceArea, double.Epsilon);
+        if (splitCost >= IntersectionCost * count && count <= MaxLeafSize)
         {
             return MakeLeaf(nodes, index, start, count, box);
         }
 
-        return MakeInterior(nodes, order, index, start, mid, end, depth, axis, box);
+        int mid = Partition(order, start, end, bestAxis, centroidBox.Min[bestAxis], centroidBox.Max[bestAxis], bestBin);
+        return MakeInterior(nodes, order, index, start, mid, end, depth, bestAxis, box);
     }
 
     private int MakeInterior(List<BvhNode> nodes, int[] order, int index, int start, int mid, int end, int depth, int axis, BoundingBox box)
@@ -346,17 +364,15 @@ public sealed class Bvh : AccelerationStructure
         return index;
     }
 
-    /// <summary>Bins centroids along the axis, picks the cheapest SAH plane and partitions order[start..end) around it.</summary>
-    private int FindSahSplit(int[] order, int start, int end, int axis, double lo, double hi, BoundingBox box, out bool makeLeaf)
+    /// <summary>Bins centroids along one axis and returns the cheapest SAH cost (area-weighted counts) and its bin boundary.</summary>
+    private double EvaluateSah(int[] order, int start, int end, int axis, double lo, double hi, out int bestSplit)
     {
         BoundingBox[] bounds = Table.Bounds;
         Point3D[] centroids = Table.Centroids;
         Span<int> binCounts = stackalloc int[BinCount];
-        var binBounds = new BoundingBox[BinCount];
-        for (int b = 0; b < BinCount; b++)
-        {
-            binBounds[b] = BoundingBox.Empty;
-        }
+        Span<BoundingBox> binBounds = stackalloc BoundingBox[BinCount];
+        binCounts.Clear();
+        binBounds.Fill(BoundingBox.Empty);
 
         double scale = BinCount * (1 - 1e-9) / (hi - lo);
         for (int i = start; i < end; i++)
@@ -380,7 +396,7 @@ public sealed class Bvh : AccelerationStructure
         }
 
         double bestCost = double.PositiveInfinity;
-        int bestSplit = 1;
+        bestSplit = 1;
         acc = BoundingBox.Empty;
         accCount = 0;
         for (int b = 1; b < BinCount; b++)
@@ -400,16 +416,18 @@ public sealed class Bvh : AccelerationStructure
             }
         }
 
-        int count = end - start;
-        double parentArea = box.SurfaceArea;
-        double splitCost = TraversalCost + IntersectionCost * bestCost / Math.Max(parentArea, double.Epsilon);
-        makeLeaf = splitCost >= IntersectionCost * count;
+        return bestCost;
+    }
 
-        // Partition: bins below bestSplit go left.
+    /// <summary>Moves primitives whose centroid bins below <paramref name="split"/> to the front; returns the boundary.</summary>
+    private int Partition(int[] order, int start, int end, int axis, double lo, double hi, int split)
+    {
+        Point3D[] centroids = Table.Centroids;
+        double scale = BinCount * (1 - 1e-9) / (hi - lo);
         int left = start, right = end - 1;
         while (left <= right)
         {
-            if (BinOf(centroids[order[left]][axis], lo, scale) < bestSplit)
+            if (BinOf(centroids[order[left]][axis], lo, scale) < split)
             {
                 left++;
             }
@@ -420,12 +438,8 @@ public sealed class Bvh : AccelerationStructure
             }
         }
 
-        if (left == start || left == end)
-        {
-            left = start + count / 2; // cannot happen with non-empty sides, kept as a guard
-        }
-
-        return left;
+        // Both sides are non-empty when the split came from the SAH sweep; guard anyway.
+        return left == start || left == end ? start + (end - start) / 2 : left;
     }
 
     /// <summary>Ray broadcast into vectors for testing four boxes at once.</summary>

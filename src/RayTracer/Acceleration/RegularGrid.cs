@@ -152,7 +152,8 @@ public sealed class RegularGrid : AccelerationStructure
                 int i = _cellObjects[k];
                 if (nearest)
                 {
-                    if (table.Intersect(i, ray, tBest, out double ti))
+                    double ti = table.Distance(i, ray, tBest);
+                    if (ti < tBest)
                     {
                         tBest = ti;
                         best = i;
