@@ -36,8 +36,9 @@ public class CornellBoxScene : SceneDescription
         world.Add(new Rectangle(new Point3D(s, 0, 0), new Vector3D(0, 0, s), new Vector3D(0, s, 0), new Normal3D(-1, 0, 0)) { Material = green });
         world.Add(WithMaterial(new Instance(new Box(new Point3D(-0.8, 0, -0.8), new Point3D(0.8, 3, 0.8))).RotateY(0.35).Translate(1.7, 0, 1.8), white));
         world.Add(WithMaterial(new Instance(new Box(new Point3D(-0.75, 0, -0.75), new Point3D(0.75, 1.5, 0.75))).RotateY(-0.3).Translate(3.4, 0, 3.2), white));
-        var panel = new Rectangle(new Point3D(1.75, s - 1e-3, 1.75), new Vector3D(1.5, 0, 0), new Vector3D(0, 0, 1.5), new Normal3D(0, -1, 0));
-        LightFactory.AddAreaLight(world, panel, 18.0, new RGBColor(1, 0.9, 0.75));
+        // A fairly large panel: pure path tracing only finds light when a bounce happens to hit it.
+        var panel = new Rectangle(new Point3D(1.0, s - 1e-3, 1.0), new Vector3D(3, 0, 0), new Vector3D(0, 0, 3), new Normal3D(0, -1, 0));
+        LightFactory.AddAreaLight(world, panel, 4.5, new RGBColor(1, 0.9, 0.75));
         // From 10 units in front of the opening a 28° view just fits the box's front edges.
         world.Camera = CameraFactory.Pinhole(new Point3D(s / 2, s / 2, s + 10), new Point3D(s / 2, s / 2, 0), 28, world.ViewPlane);
         world.Tracer = CreateTracer(world);
