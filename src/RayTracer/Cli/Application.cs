@@ -23,10 +23,12 @@ public static class Application
     {
         try
         {
-            if (args.Length == 0 || args[0] is "-h" or "--help" or "help")
+            if (args.Length == 0)
+                throw new UsageException("no command given");
+            if (args[0] is "-h" or "--help" or "help")
             {
                 stdout.WriteLine(UsageText);
-                return args.Length == 0 ? Usage : Ok;
+                return Ok;
             }
             return args[0] switch
             {

@@ -67,6 +67,7 @@ public sealed class Application_Commands : IDisposable
     [InlineData("render", "spheres", "-o", "x.png", "--width", "5", "--width", "6")]
     [InlineData("render", "spheres", "extra", "-o", "x.png")]
     [InlineData("paint")]
+    [InlineData]
     [InlineData("list", "extra")]
     [InlineData("bench", "--triangles", "3")]
     public void Bad_arguments_exit_with_2_a_message_and_no_output_file(params string[] args)
