@@ -23,6 +23,7 @@ public static class SceneFactory
         () => new CompoundObjectsScene(),
         () => new BinaryObjectScene(),
         () => new MeshesScene(),
+        () => new PinholeZoomScene(),
         () => new OrthographicScene(),
         () => new ThinLensScene(),
         () => new FisheyeScene(),
