@@ -98,18 +98,6 @@ internal sealed class PrimitiveTable
         Centroids = [];
     }
 
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public bool Intersect(int i, in Ray ray, double tMax, out double t)
-    {
-        if (_isTriangle[i])
-        {
-            ref PackedTriangle tri = ref _triangles[i];
-            return TriangleSolver.Intersect(ray, tri.V0, tri.E1, tri.E2, tMax, out t, out _, out _);
-        }
-
-        return Objects[i].Intersect(ray, out t) && t < tMax;
-    }
-
     /// <summary>Hit distance below tMax, or +∞.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public double Distance(int i, in Ray ray, double tMax)
