@@ -10,6 +10,9 @@ namespace RayTracer.Viewing.Imaging;
 /// </summary>
 public static class PngDecoder
 {
+    /// <summary>Largest accepted image (pixels), so a hostile header cannot ask for an absurd buffer.</summary>
+    public const long MaxPixels = 1L << 28;
+
     public static PixelImage Load(string path)
     {
         byte[] bytes;
@@ -73,6 +76,8 @@ public static class PngDecoder
                     colorType = data[9];
                     if (width <= 0 || height <= 0)
                         throw new PngFormatException($"invalid image size {width}x{height}.");
+                    if ((long)width * height > MaxPixels)
+                        throw new PngFormatException($"image size {width}x{height} exceeds the supported {MaxPixels} pixels.");
                     if (bitDepth != 8)
                         throw new PngFormatException($"bit depth {bitDepth} is not supported (only 8).");
                     if (colorType is not (0 or 2 or 3 or 4 or 6))
