@@ -3,7 +3,7 @@ using RayTracer.Util;
 namespace RayTracer.Textures;
 
 /// <summary>A texture defined on 3D space, evaluated at the local hit point (carved out of a solid block).</summary>
-public abstract class SolidTexture<T> : Texture<T>
+public abstract class SolidTexture<T> : Texture<T>, IUVWMapped<T>
 {
     public abstract T Evaluate(Point3D p);
 

@@ -7,7 +7,7 @@ namespace RayTracer.Textures;
 /// A texture defined on 2D texture space. (u, v) come from <see cref="Mapping"/> applied to the local hit
 /// point, or from the object's own texture coordinates when there is no mapping.
 /// </summary>
-public abstract class UVTexture<T> : Texture<T>
+public abstract class UVTexture<T> : Texture<T>, IUVMapped<T>
 {
     public TextureMapping? Mapping { get; set; }
 
