@@ -8,23 +8,26 @@ public static class CodeGenerator
     public static CodeGenerationResult Generate(CodeGenerationRequest request)
     {
         request = request with { Simplify = EffectiveSimplifier(request.Simplify) };
-        CodeBlock? joined = null, split = null;
+        var candidates = new List<(CodeBlock Block, JoinMode Form)>();
         if (request.Join != JoinMode.Split)
-            joined = Optimizer.Optimize(Build(request.Evaluate(null), [], request));
+            candidates.Add((Optimizer.Optimize(Build(request.Evaluate(null), [], request)), JoinMode.Joined));
         if (request.Join != JoinMode.Joined)
         {
-            var recorder = new TemporaryRecorder(request.Simplify);
-            var program = request.Evaluate(recorder);
-            split = Optimizer.Optimize(Build(program, recorder.Temporaries, request));
+            foreach (var statementsOnly in new[] { false, true })
+            {
+                var recorder = new TemporaryRecorder(request.Simplify, statementsOnly);
+                var program = request.Evaluate(recorder);
+                candidates.Add((Optimizer.Optimize(Build(program, recorder.Temporaries, request)), JoinMode.Split));
+            }
         }
-
-        if (joined is null) return new CodeGenerationResult(split!, split!.Statistics(), JoinMode.Split, null);
-        if (split is null) return new CodeGenerationResult(joined, joined.Statistics(), JoinMode.Joined, null);
-        var (js, ss) = (joined.Statistics(), split.Statistics());
-        var preferJoined = js.Cost < ss.Cost || (js.Cost == ss.Cost && js.Temporaries <= ss.Temporaries);
-        return preferJoined
-            ? new CodeGenerationResult(joined, js, JoinMode.Joined, ss)
-            : new CodeGenerationResult(split, ss, JoinMode.Split, js);
+        // The cheapest form wins; on a tie, the one with fewer temporaries, then the earlier (joined first).
+        var ranked = candidates
+            .Select((c, i) => (c.Block, c.Form, Stats: c.Block.Statistics(), Index: i))
+            .OrderBy(c => c.Stats.Cost).ThenBy(c => c.Stats.Temporaries).ThenBy(c => c.Index)
+            .ToList();
+        var best = ranked[0];
+        var alternative = ranked.Skip(1).FirstOrDefault(c => c.Form != best.Form);
+        return new CodeGenerationResult(best.Block, best.Stats, best.Form, alternative.Block is null ? null : alternative.Stats);
     }
 
     /// <summary>The caller's simplifier (side relations, assumptions) with sums cancelled against their inverses.</summary>

@@ -13,6 +13,7 @@ public sealed class Optimizer
         var inline = new InlineSingleUsePass();
         var cse = new CommonSubexpressionPass();
         var dead = new DeadCodePass();
+        var pairs = new PairExtractionPass();
 
         block = dead.Run(copy.Run(fold.Run(block)));
         block = fold.Run(strength.Run(block));
@@ -22,6 +23,7 @@ public sealed class Optimizer
             block = inline.Run(block);
             block = copy.Run(fold.Run(block));
             block = dead.Run(cse.Run(block));
+            block = dead.Run(cse.Run(pairs.Run(block)));
             if (block.ToString() == before) break;
         }
         block = strength.Run(block); // CSE may expose repeated denominators

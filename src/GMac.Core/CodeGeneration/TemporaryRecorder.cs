@@ -22,7 +22,17 @@ public sealed class TemporaryRecorder
     private readonly Dictionary<string, Lazy<Scalar>> _expanded = new(StringComparer.Ordinal);
     private readonly Func<Scalar, Scalar> _simplify;
 
-    public TemporaryRecorder(Func<Scalar, Scalar>? simplify = null) => _simplify = simplify ?? (s => s);
+    public TemporaryRecorder(Func<Scalar, Scalar>? simplify = null, bool statementsOnly = false)
+    {
+        _simplify = simplify ?? (s => s);
+        StatementsOnly = statementsOnly;
+    }
+
+    /// <summary>
+    /// Whether only the results of whole statements should be named, not every subexpression:
+    /// coarser naming leaves more to the symbolic form, which sometimes cancels more.
+    /// </summary>
+    public bool StatementsOnly { get; }
 
     /// <summary>Temporaries in definition order; each value reads only inputs and earlier temporaries.</summary>
     public IReadOnlyList<(string Name, Scalar Value)> Temporaries => _temporaries;

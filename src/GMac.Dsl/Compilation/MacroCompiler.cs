@@ -14,6 +14,9 @@ public sealed class MacroCompiler(CoreFrames frames)
 {
     private readonly MacroEvaluator<Scalar> _evaluator = new(frames, SymbolicDomain.Instance, Differentiate);
 
+    /// <summary>The symbolic evaluator, for callers that observe the evaluation (code generation).</summary>
+    public MacroEvaluator<Scalar> Evaluator => _evaluator;
+
     public CoreFrames Frames { get; } = frames;
 
     /// <summary>The symbolic value of each input before evaluation, for the given bindings.</summary>

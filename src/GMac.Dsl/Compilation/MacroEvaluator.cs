@@ -24,13 +24,46 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
     private readonly record struct Value(T Scalar, Multivector<T>? Multivector);
 
     private sealed record Context(MacroSymbol Macro, IReadOnlyDictionary<VariableSymbol, Multivector<T>> Inputs,
-        Dictionary<VariableSymbol, Value> Environment, int StatementIndex, int Depth);
+        Dictionary<VariableSymbol, Value> Environment, int StatementIndex, int Depth, RunState State);
+
+    /// <summary>Per-run state: the observer and whether a <c>join on</c> region is open.</summary>
+    private sealed class RunState(EvaluationObserver<T>? observer)
+    {
+        public EvaluationObserver<T>? Observer { get; } = observer;
+        public bool Joined { get; set; }
+    }
+
+    private EvaluationObserver<T>? _observer;
 
     public CoreFrames Frames { get; } = frames;
 
     /// <summary>The outputs the macro assigns, from values for all its inputs.</summary>
     public IReadOnlyDictionary<VariableSymbol, Multivector<T>> Evaluate(MacroSymbol macro,
         IReadOnlyDictionary<VariableSymbol, Multivector<T>> inputs) => Evaluate(macro, inputs, 0);
+
+    /// <summary>Evaluates with an observer (code generation); not reentrant.</summary>
+    public IReadOnlyDictionary<VariableSymbol, Multivector<T>> Evaluate(MacroSymbol macro,
+        IReadOnlyDictionary<VariableSymbol, Multivector<T>> inputs, EvaluationObserver<T>? observer)
+    {
+        var previous = _observer;
+        _observer = observer;
+        try
+        {
+            return Evaluate(macro, inputs, 0);
+        }
+        finally
+        {
+            _observer = previous;
+        }
+    }
+
+    /// <summary>A scalar expression outside any macro (class-binding coefficients), members read through the observer.</summary>
+    public T EvaluateScalar(BoundExpression expression, EvaluationObserver<T> observer)
+    {
+        var macro = new MacroSymbol("<binding>", expression.Span);
+        var context = new Context(macro, new Dictionary<VariableSymbol, Multivector<T>>(), new Dictionary<VariableSymbol, Value>(), 0, 0, new RunState(observer));
+        return AsScalar(Evaluate(expression, context));
+    }
 
     private Dictionary<VariableSymbol, Multivector<T>> Evaluate(MacroSymbol macro,
         IReadOnlyDictionary<VariableSymbol, Multivector<T>> inputs, int depth)
@@ -48,6 +81,7 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
         int count, int depth)
     {
         var env = new Dictionary<VariableSymbol, Value>();
+        var state = new RunState(_observer);
         foreach (var input in macro.Inputs)
         {
             if (!inputs.TryGetValue(input, out var value))
@@ -56,7 +90,7 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
         }
         for (var i = 0; i < count; i++)
         {
-            var context = new Context(macro, inputs, env, i, depth);
+            var context = new Context(macro, inputs, env, i, depth, state);
             try
             {
                 Execute(macro.Statements[i], context);
@@ -74,7 +108,8 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
         switch (statement)
         {
             case BoundAssignment a:
-                context.Environment[a.Target] = Evaluate(a.Value, context);
+                var assigned = Evaluate(a.Value, context);
+                context.Environment[a.Target] = context.State.Observer is { NameStatementsOnly: true } ? Named(assigned, a.Value, context) : assigned;
                 break;
             case BoundCallStatement c:
             {
@@ -86,7 +121,13 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
                     if (outputs.TryGetValue(b.Parameter, out var value)) context.Environment[b.Target!] = new Value(T.Zero, value);
                 break;
             }
-            // output text and join directives shape the generated code, not the values.
+            case BoundJoinStatement j:
+                context.State.Joined = j.IsOn;
+                break;
+            case BoundOutputStatement o when context.Depth == 0 && context.State.Observer?.OutputText is { } report:
+                report(o, o.References.Select(r => AsScalar(Evaluate(r, context))).ToArray());
+                break;
+            // output text of called macros shapes nothing: only the generated macro's own text is emitted.
         }
     }
 
@@ -100,6 +141,21 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
     private T Scalar(BoundExpression e, Context context) => AsScalar(Evaluate(e, context));
 
     private Value Evaluate(BoundExpression expression, Context context)
+    {
+        var value = EvaluateUnnamed(expression, context);
+        if (context.State.Observer is not { NameStatementsOnly: false }) return value;
+        return Named(value, expression, context);
+    }
+
+    private static Value Named(Value value, BoundExpression expression, Context context)
+    {
+        if (context.State is { Joined: false, Observer.Name: { } name } && value.Multivector is { } mv
+            && expression is not (BoundVariableReference or BoundNumber))
+            value = value with { Multivector = name(mv) };
+        return value;
+    }
+
+    private Value EvaluateUnnamed(BoundExpression expression, Context context)
     {
         var frame = expression.Type.Frame is { } f ? Frames[f] : null;
         switch (expression)
@@ -115,7 +171,9 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
             case BoundMultivectorConstruction m:
                 return new Value(T.Zero, Construct(Frames[m.Frame], m.Coefficients, context));
             case BoundMemberReference r:
-                throw new MacroEvaluationException(r.Span, "member references have no value inside a macro");
+                return context.State.Observer?.Member is { } member
+                    ? new Value(member(r.Path), null)
+                    : throw new MacroEvaluationException(r.Span, "member references have no value inside a macro");
             case BoundScalarFunctionCall call:
                 return new Value(Apply(call, context), null);
             case BoundCoefficient c:
@@ -248,6 +306,12 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
             case BinaryOperator.Divide:
                 return new Value(T.Zero, Mv(b.Left, context, frame) / Scalar(b.Right, context));
         }
+        if (b.Operator == BinaryOperator.Op && OuterProductChain(b) is { Count: >= 3 } factors)
+        {
+            var vectors = factors.Select(e => Mv(e, context, frame)).ToArray();
+            var name = context.State is { Joined: false, Observer.Name: { } n } ? n : null;
+            return new Value(T.Zero, Multivector<T>.OuterProductOfVectors(vectors, name));
+        }
         var l = Mv(b.Left, context, frame);
         var r = Mv(b.Right, context, frame);
         return new Value(T.Zero, b.Operator switch
@@ -265,6 +329,23 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
             BinaryOperator.Acp => l.Acp(r),
             _ => throw new MacroEvaluationException(b.Span, $"'{b.Operator}' needs scalar operands"),
         });
+    }
+
+    /// <summary>The factors of a ∧ b ∧ c ∧ … when every factor is a vector, else null.</summary>
+    private static List<BoundExpression>? OuterProductChain(BoundBinaryOperation b)
+    {
+        var factors = new List<BoundExpression>();
+        void Collect(BoundExpression e)
+        {
+            if (e is BoundBinaryOperation { Operator: BinaryOperator.Op } inner)
+            {
+                Collect(inner.Left);
+                Collect(inner.Right);
+            }
+            else factors.Add(e);
+        }
+        Collect(b);
+        return factors.All(f => f.Type.GradeMask == 1 << 1) ? factors : null;
     }
 
     private Multivector<T> Differentiate(BoundDifferentiation d, Context context, Frame frame)

@@ -1,0 +1,121 @@
+namespace GMac.Core.CodeGeneration.Passes;
+
+/// <summary>
+/// Common subexpressions hidden inside flattened products and sums: when two factors occur
+/// together in several products (a·b·c and a·b·d), or two terms in several sums, their product
+/// or sum becomes a temporary. The pair found in most nodes goes first, until no pair repeats.
+/// </summary>
+public sealed class PairExtractionPass(Func<int, string> temporaryName) : IOptimizerPass
+{
+    private int _counter;
+
+    public string Name => "shared factor and term pairs";
+
+    public PairExtractionPass() : this(i => $"pair{i}") { }
+
+    private readonly record struct Pair(Expr First, Expr Second);
+
+    public CodeBlock Run(CodeBlock block)
+    {
+        var taken = new HashSet<string>(block.Statements.OfType<AssignmentStatement>().Select(a => a.Target), StringComparer.Ordinal);
+        taken.UnionWith(block.InputText.Keys);
+        for (var iteration = 0; iteration < 10_000; iteration++)
+        {
+            var (pair, isProduct) = FindBest(block);
+            if (pair is null) return block;
+            string name;
+            do name = temporaryName(_counter++); while (!taken.Add(name));
+            block = Extract(block, pair.Value, isProduct, name);
+        }
+        return block;
+    }
+
+    /// <summary>Terms of a sum as (operand, negated); factors of a product as (factor, false).</summary>
+    private static List<(Expr Item, bool Negated)> Items(Expr node) =>
+        node is SumExpr
+            ? node.Children.Select(c => c is NegateExpr n ? (n.Operand, true) : (c, false)).ToList()
+            : node.Children.Select(c => (c, false)).ToList();
+
+    /// <summary>
+    /// The pair of two items in a fixed orientation: ordered by a deterministic key, and for sums
+    /// with the first term positive (−a − b is −(a + b)); reports whether the occurrence is negated.
+    /// </summary>
+    private static (Pair Pair, bool Negated) Orient((Expr Item, bool Negated) x, (Expr Item, bool Negated) y, bool isProduct)
+    {
+        if (Order(y.Item, x.Item) < 0) (x, y) = (y, x);
+        if (isProduct) return (new Pair(x.Item, y.Item), false);
+        var negated = x.Negated;
+        var second = negated ? !y.Negated : y.Negated;
+        return (new Pair(x.Item, second ? ExprFactory.Negate(y.Item) : y.Item), negated);
+    }
+
+    private static int Order(Expr a, Expr b)
+    {
+        var c = a.GetHashCode().CompareTo(b.GetHashCode());
+        return c != 0 ? c : string.CompareOrdinal(a.ToString(), b.ToString());
+    }
+
+    private static (Pair? Pair, bool IsProduct) FindBest(CodeBlock block)
+    {
+        var counts = new Dictionary<(Pair, bool), int>();
+        var order = new List<(Pair, bool)>();
+        foreach (var s in block.Statements)
+        foreach (var root in s.Expressions)
+        foreach (var node in root.DescendantsAndSelf())
+        {
+            if (node is not (SumExpr or ProductExpr)) continue;
+            var isProduct = node is ProductExpr;
+            var items = Items(node);
+            var seen = new HashSet<(Pair, bool)>();
+            for (var i = 0; i < items.Count; i++)
+            for (var j = i + 1; j < items.Count; j++)
+            {
+                var key = (Orient(items[i], items[j], isProduct).Pair, isProduct);
+                if (!seen.Add(key)) continue;
+                if (counts.TryGetValue(key, out var c)) counts[key] = c + 1;
+                else { counts[key] = 1; order.Add(key); }
+            }
+        }
+        (Pair, bool)? best = null;
+        var bestCount = 1;
+        foreach (var key in order)
+            if (counts[key] > bestCount) { best = key; bestCount = counts[key]; }
+        return best is { } b ? (b.Item1, b.Item2) : (null, false);
+    }
+
+    private static CodeBlock Extract(CodeBlock block, Pair pair, bool isProduct, string name)
+    {
+        var variable = ExprFactory.Variable(name);
+        var value = isProduct ? ExprFactory.Product(pair.First, pair.Second) : ExprFactory.Sum(pair.First, pair.Second);
+
+        Expr? Rewrite(Expr node)
+        {
+            if (isProduct ? node is not ProductExpr : node is not SumExpr) return null;
+            var items = Items(node);
+            for (var i = 0; i < items.Count; i++)
+            for (var j = i + 1; j < items.Count; j++)
+            {
+                var (p, negated) = Orient(items[i], items[j], isProduct);
+                if (!p.Equals(pair)) continue;
+                var rest = node.Children.Where((_, k) => k != i && k != j).ToList();
+                if (isProduct) return ExprFactory.Product(rest.Append(variable));
+                return ExprFactory.Sum(rest.Append(negated ? ExprFactory.Negate(variable) : variable));
+            }
+            return null;
+        }
+
+        var result = new List<CodeStatement>();
+        var inserted = false;
+        foreach (var s in block.Statements)
+        {
+            var exprs = s.Expressions.Select(e => e.Rewrite(n => Rewrite(n) ?? (n.IsLeaf ? n : ExprFactory.Normalize(n)))).ToArray();
+            if (!inserted && !exprs.SequenceEqual(s.Expressions))
+            {
+                result.Add(new AssignmentStatement(name, value, false));
+                inserted = true;
+            }
+            result.Add(s.WithExpressions(exprs));
+        }
+        return block.WithStatements(result);
+    }
+}

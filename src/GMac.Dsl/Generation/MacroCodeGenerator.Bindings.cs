@@ -1,0 +1,174 @@
+using GMac.Core.Algebra;
+using GMac.Core.Symbolic;
+using GMac.Dsl.Compilation;
+using GMac.Dsl.Semantics;
+
+namespace GMac.Dsl.Generation;
+
+public sealed partial class MacroCodeGenerator
+{
+    private VariableSymbol? FindParameter(MacroSymbol macro, string name, BindingSpec at, List<GenerationError> errors)
+    {
+        var parameter = macro.Inputs.Concat(macro.Outputs).FirstOrDefault(p => p.Name == name);
+        if (parameter is not null) return parameter;
+        var hint = NameSuggester.Suggest(name, macro.Inputs.Concat(macro.Outputs).Select(p => p.Name)) is { } s ? $"; did you mean '{s}'?" : "";
+        errors.Add(new GenerationError("GMAC0302", $"macro '{macro.Name}' has no input or output named '{name}'{hint}", at.Line, at.Column));
+        return null;
+    }
+
+    private void BindCoefficient(MacroSymbol macro, CoefficientBindingSpec c, AtomTable atoms,
+        Dictionary<(VariableSymbol, int), Scalar> inputValues,
+        Dictionary<string, (VariableSymbol, int, int)> outputs, Dictionary<string, string> outputTargets, List<GenerationError> errors)
+    {
+        if (FindParameter(macro, c.Parameter, c, errors) is not { } parameter) return;
+        var frame = _frames[parameter.Class!.Frame];
+        if (!frame.TryParseBlade(c.Blade, out var blade, out var sign))
+        {
+            errors.Add(new GenerationError("GMAC0303", $"'{c.Blade}' is not a blade of frame '{frame.Name}' (basis vectors: {string.Join(", ", frame.BasisVectorNames)})", c.Line, c.Column));
+            return;
+        }
+        var key = $"{parameter.Name}.{frame.BladeName(blade)}";
+        if (parameter.Kind == VariableKind.Input)
+        {
+            if (!parameter.Class.VariableBlades.Contains(blade.Id))
+            {
+                errors.Add(new GenerationError("GMAC0304", $"'{key}' is not a variable coefficient of class '{parameter.Class.QualifiedName}' of input '{parameter.Name}'", c.Line, c.Column));
+                return;
+            }
+            if (ParseValue(c, atoms, errors) is not { } value) return;
+            if (!inputValues.TryAdd((parameter, blade.Id), sign < 0 ? -value : value))
+                errors.Add(new GenerationError("GMAC0305", $"'{key}' is bound twice", c.Line, c.Column));
+            return;
+        }
+
+        if (!parameter.Class.AllBlades.Contains(blade.Id))
+        {
+            errors.Add(new GenerationError("GMAC0304", $"'{key}' is not a coefficient of class '{parameter.Class.QualifiedName}' of output '{parameter.Name}'", c.Line, c.Column));
+            return;
+        }
+        var target = c.IsTemplate ? TemplateTarget(c.Value) : c.Value.Trim();
+        if (string.IsNullOrWhiteSpace(target))
+        {
+            errors.Add(new GenerationError("GMAC0311", $"output '{key}' must be bound to an assignable target such as \"<wx>\", not \"{c.Value}\"", c.Line, c.Column));
+            return;
+        }
+        if (!outputs.TryAdd(key, (parameter, blade.Id, sign)))
+        {
+            errors.Add(new GenerationError("GMAC0305", $"'{key}' is bound twice", c.Line, c.Column));
+            return;
+        }
+        outputTargets[key] = target;
+    }
+
+    /// <summary>"&lt;wx&gt;" → "wx"; anything else around the brackets makes it no target.</summary>
+    private static string? TemplateTarget(string text)
+    {
+        text = text.Trim();
+        return text.Length > 2 && text[0] == '<' && text[^1] == '>' && text.IndexOf('<', 1) < 0 ? text[1..^1].Trim() : null;
+    }
+
+    /// <summary>An input value: a number, a bare target-language expression, or a scalar expression over &lt;…&gt; parts.</summary>
+    private static Scalar? ParseValue(CoefficientBindingSpec c, AtomTable atoms, List<GenerationError> errors)
+    {
+        var text = c.Value.Trim();
+        if (!c.IsTemplate)
+            return Core.Numerics.Rational.TryParse(text, out var number) ? Scalar.Constant(number) : atoms.For(text);
+
+        var expression = new System.Text.StringBuilder();
+        var i = 0;
+        while (i < text.Length)
+        {
+            if (text[i] != '<') { expression.Append(text[i++]); continue; }
+            var close = FindClosing(text, i);
+            if (close < 0)
+            {
+                errors.Add(new GenerationError("GMAC0308", $"unbalanced '<' in \"{c.Value}\"", c.Line, c.Column));
+                return null;
+            }
+            expression.Append(atoms.For(text[(i + 1)..close]).ToString());
+            i = close + 1;
+        }
+        try
+        {
+            var value = Scalar.Parse(expression.ToString());
+            var stray = value.Variables.FirstOrDefault(v => !v.StartsWith(AtomPrefix, StringComparison.Ordinal));
+            if (stray is null) return value;
+            errors.Add(new GenerationError("GMAC0308", $"\"{c.Value}\" names '{stray}', which is neither a number nor a <target-language expression>", c.Line, c.Column));
+        }
+        catch (ScalarSyntaxException e)
+        {
+            errors.Add(new GenerationError("GMAC0308", $"\"{c.Value}\" is not a valid scalar expression: {e.Message}", c.Line, c.Column));
+        }
+        return null;
+    }
+
+    /// <summary>The '>' closing the '&lt;' at start, allowing nested brackets (generic types, comparisons inside calls).</summary>
+    private static int FindClosing(string text, int start)
+    {
+        var depth = 0;
+        for (var i = start; i < text.Length; i++)
+        {
+            if (text[i] == '<') depth++;
+            else if (text[i] == '>' && --depth == 0) return i;
+        }
+        return -1;
+    }
+
+    private Assumptions BindClass(MacroSymbol macro, ClassBindingSpec c, AtomTable atoms,
+        Dictionary<(VariableSymbol, int), Scalar> inputValues,
+        Dictionary<string, (VariableSymbol, int, int)> outputs, Dictionary<string, string> outputTargets,
+        Assumptions assumptions, List<GenerationError> errors)
+    {
+        if (FindParameter(macro, c.Parameter, c, errors) is not { } parameter) return assumptions;
+        var model = _project.Model;
+        if (!model.ClassBindings.TryGetValue(c.ClassBinding, out var binding))
+        {
+            var hint = NameSuggester.Suggest(c.ClassBinding, model.ClassBindings.Keys) is { } s ? $"; did you mean '{s}'?" : "";
+            errors.Add(new GenerationError("GMAC0309", $"unknown class binding '{c.ClassBinding}'{hint}", c.Line, c.Column));
+            return assumptions;
+        }
+        if (binding.Frame != parameter.Class!.Frame)
+        {
+            errors.Add(new GenerationError("GMAC0309", $"class binding '{binding.Name}' is on frame '{binding.Frame.Name}', but '{parameter.Name}' of macro '{macro.Name}' is on frame '{parameter.Class.Frame.Name}'", c.Line, c.Column));
+            return assumptions;
+        }
+        var frame = _frames[binding.Frame];
+        var target = c.Target.Trim();
+        string Member(string path) => $"{target}.{path}";
+
+        if (parameter.Kind == VariableKind.Input)
+        {
+            var observer = new EvaluationObserver<Scalar> { Member = path => atoms.For(Member(path)) };
+            foreach (var coefficient in binding.Coefficients)
+            {
+                if (!parameter.Class.VariableBlades.Contains(coefficient.Blade.Mask)) continue; // class constants stay
+                var value = _compiler.Evaluator.EvaluateScalar(coefficient.Value, observer);
+                if (!inputValues.TryAdd((parameter, coefficient.Blade.Mask), coefficient.Blade.Sign < 0 ? -value : value))
+                    errors.Add(new GenerationError("GMAC0305", $"'{parameter.Name}.{frame.BladeName(new BasisBlade(coefficient.Blade.Mask))}' is bound twice", c.Line, c.Column));
+            }
+            foreach (var (member, min) in binding.Minimums)
+                if (atoms.Find(Member(member)) is { } v) assumptions = assumptions.WithMinimum(v, min);
+            foreach (var (member, max) in binding.Maximums)
+                if (atoms.Find(Member(member)) is { } v) assumptions = assumptions.WithMaximum(v, max);
+            return assumptions;
+        }
+
+        foreach (var coefficient in binding.Coefficients)
+        {
+            var key = $"{parameter.Name}.{frame.BladeName(new BasisBlade(coefficient.Blade.Mask))}";
+            if (coefficient.Value is not BoundMemberReference member)
+            {
+                errors.Add(new GenerationError("GMAC0311", $"class binding '{binding.Name}' cannot receive output '{parameter.Name}': its coefficient of {frame.BladeName(new BasisBlade(coefficient.Blade.Mask))} is an expression, not a member", c.Line, c.Column));
+                continue;
+            }
+            if (!parameter.Class.AllBlades.Contains(coefficient.Blade.Mask)) continue;
+            if (!outputs.TryAdd(key, (parameter, coefficient.Blade.Mask, coefficient.Blade.Sign)))
+            {
+                errors.Add(new GenerationError("GMAC0305", $"'{key}' is bound twice", c.Line, c.Column));
+                continue;
+            }
+            outputTargets[key] = Member(member.Path);
+        }
+        return assumptions;
+    }
+}

@@ -1,0 +1,197 @@
+using System.Text.RegularExpressions;
+using GMac.Core.Algebra;
+using GMac.Core.CodeGeneration;
+using GMac.Core.Numerics;
+using GMac.Core.Symbolic;
+using GMac.Dsl.Compilation;
+using GMac.Dsl.Semantics;
+
+namespace GMac.Dsl.Generation;
+
+/// <summary>
+/// Generates the statements of one binding point: reads its bindings against the macro's
+/// parameters, evaluates the macro symbolically (naming intermediate results unless joined),
+/// simplifies under the bindings' assumptions and the classes' normalization, and optimizes.
+/// </summary>
+public sealed partial class MacroCodeGenerator
+{
+    private const string AtomPrefix = "bp_in";
+
+    private readonly DslProject _project;
+    private readonly CoreFrames _frames = new();
+    private readonly MacroCompiler _compiler;
+    private readonly MacroEvaluator<double> _numeric;
+    private readonly ICasAdapter _cas;
+
+    public MacroCodeGenerator(DslProject project, ICasAdapter? cas = null)
+    {
+        _project = project;
+        _compiler = new MacroCompiler(_frames);
+        _numeric = new MacroEvaluator<double>(_frames, DoubleDomain.Instance);
+        _cas = cas ?? new RuleBasedCas();
+    }
+
+    public GenerationOutcome Generate(string macroName, IReadOnlyList<BindingSpec> bindings, int regionLine = 1)
+    {
+        var errors = new List<GenerationError>();
+        var plan = Plan(macroName, bindings, regionLine, errors);
+        if (plan is null || errors.Count > 0) return new GenerationOutcome(null, errors, null);
+        try
+        {
+            return new GenerationOutcome(CodeGenerator.Generate(plan.Request), errors, plan);
+        }
+        catch (Exception e) when (e is MacroEvaluationException or AlgebraException or InvalidOperationException)
+        {
+            errors.Add(new GenerationError("GMAC0310", $"macro '{macroName}' cannot be generated for these bindings: {e.Message}", regionLine, 1));
+            return new GenerationOutcome(null, errors, null);
+        }
+    }
+
+    private BindingPointPlan? Plan(string macroName, IReadOnlyList<BindingSpec> bindings, int regionLine, List<GenerationError> errors)
+    {
+        var model = _project.Model;
+        if (!model.Macros.TryGetValue(macroName, out var macro))
+        {
+            var hint = NameSuggester.Suggest(macroName, model.Macros.Keys) is { } s ? $"; did you mean '{s}'?" : "";
+            errors.Add(new GenerationError("GMAC0301", $"unknown macro '{macroName}'{hint}", regionLine, 1));
+            return null;
+        }
+
+        var atoms = new AtomTable();
+        var inputValues = new Dictionary<(VariableSymbol, int), Scalar>();
+        var outputs = new Dictionary<string, (VariableSymbol Parameter, int Blade, int Sign)>(StringComparer.Ordinal);
+        var outputTargets = new Dictionary<string, string>(StringComparer.Ordinal);
+        var assumptions = Assumptions.None;
+
+        foreach (var binding in bindings)
+        {
+            switch (binding)
+            {
+                case CoefficientBindingSpec c:
+                    BindCoefficient(macro, c, atoms, inputValues, outputs, outputTargets, errors);
+                    break;
+                case ClassBindingSpec c:
+                    assumptions = BindClass(macro, c, atoms, inputValues, outputs, outputTargets, assumptions, errors);
+                    break;
+            }
+        }
+        foreach (var a in bindings.OfType<AssumptionSpec>())
+        {
+            if (atoms.Find(a.Expression) is not { } variable)
+            {
+                errors.Add(new GenerationError("GMAC0306", $"'{a.Expression}' in an assumption is not read by any binding of this binding point", a.Line, a.Column));
+                continue;
+            }
+            assumptions = a.IsMinimum ? assumptions.WithMinimum(variable, a.Value) : assumptions.WithMaximum(variable, a.Value);
+        }
+        if (errors.Count > 0) return null;
+        if (outputs.Count == 0)
+        {
+            errors.Add(new GenerationError("GMAC0307", $"the binding point binds no output of macro '{macroName}', so there is nothing to generate", regionLine, 1));
+            return null;
+        }
+
+        var inputs = BuildInputs(macro, inputValues);
+        var relations = MacroCompiler.NormalizationRelations(macro, inputs, SideRelations.Trigonometric);
+        assumptions = assumptions.WithRelations(relations);
+        var join = UsesDifferentiation(macro) ? JoinMode.Joined : UsesJoin(macro) ? JoinMode.Split : JoinMode.Automatic;
+
+        SymbolicProgram Evaluate(TemporaryRecorder? recorder)
+        {
+            var statements = new List<SymbolicStatement>();
+            var observer = new EvaluationObserver<Scalar>
+            {
+                Name = recorder is null ? null : recorder.Record,
+                NameStatementsOnly = recorder?.StatementsOnly ?? false,
+                OutputText = (o, values) => statements.Add(Verbatim(o.Text, values)),
+            };
+            var results = _compiler.Evaluator.Evaluate(macro, inputs, observer);
+            foreach (var (key, (parameter, blade, sign)) in outputs)
+            {
+                var value = results.TryGetValue(parameter, out var mv) ? mv[new BasisBlade(blade)] : Scalar.Zero;
+                statements.Add(new SymbolicOutput(key, sign < 0 ? -value : value));
+            }
+            return new SymbolicProgram(statements);
+        }
+
+        var request = new CodeGenerationRequest(Evaluate, atoms.Texts, outputTargets)
+        {
+            Simplify = s => _cas.Simplify(s, assumptions),
+            Join = join,
+        };
+        return new BindingPointPlan(macro, request, atoms.Texts, values => NumericReference(macro, inputValues, outputs, values));
+    }
+
+    private static SymbolicVerbatim Verbatim(string text, IReadOnlyList<Scalar> values)
+    {
+        var parts = new List<(string?, Scalar?)>();
+        var last = 0;
+        var i = 0;
+        foreach (Match m in Placeholder().Matches(text))
+        {
+            parts.Add((text[last..m.Index], null));
+            parts.Add((null, i < values.Count ? values[i] : Scalar.Zero));
+            i++;
+            last = m.Index + m.Length;
+        }
+        parts.Add((text[last..], null));
+        return new SymbolicVerbatim(parts);
+    }
+
+    [GeneratedRegex(@"<\s*[A-Za-z_][A-Za-z_0-9]*\s*\.\s*[A-Za-z_0-9^\s]+?\s*>")]
+    private static partial Regex Placeholder();
+
+    private Dictionary<VariableSymbol, Multivector<Scalar>> BuildInputs(MacroSymbol macro, Dictionary<(VariableSymbol, int), Scalar> values)
+    {
+        var inputs = new Dictionary<VariableSymbol, Multivector<Scalar>>();
+        foreach (var input in macro.Inputs)
+        {
+            var frame = _frames[input.Class!.Frame];
+            var terms = input.Class.VariableBlades
+                .Select(b => (new BasisBlade(b), values.TryGetValue((input, b), out var v) ? v : Scalar.Zero))
+                .Concat(input.Class.ConstantCoefficients.Select(c =>
+                {
+                    var value = Folding.TryFold(c.Value) is { } r ? Scalar.Constant(r) : Scalar.Zero;
+                    return (new BasisBlade(c.Blade.Mask), c.Blade.Sign < 0 ? -value : value);
+                }));
+            inputs[input] = Multivector<Scalar>.FromTerms(frame, terms);
+        }
+        return inputs;
+    }
+
+    /// <summary>The macro run on doubles: the independent reference that <c>gmac verify</c> checks generated code against.</summary>
+    private IReadOnlyDictionary<string, double> NumericReference(MacroSymbol macro, Dictionary<(VariableSymbol, int), Scalar> inputValues,
+        Dictionary<string, (VariableSymbol Parameter, int Blade, int Sign)> outputs, IReadOnlyDictionary<string, double> atomValues)
+    {
+        var inputs = new Dictionary<VariableSymbol, Multivector<double>>();
+        foreach (var input in macro.Inputs)
+        {
+            var frame = _frames[input.Class!.Frame];
+            var terms = input.Class.VariableBlades
+                .Select(b => (new BasisBlade(b), inputValues.TryGetValue((input, b), out var v) ? v.Evaluate(atomValues) : 0.0))
+                .Concat(input.Class.ConstantCoefficients.Select(c =>
+                {
+                    var value = Folding.TryFold(c.Value) is { } r ? r.ToDouble() : 0.0;
+                    return (new BasisBlade(c.Blade.Mask), c.Blade.Sign < 0 ? -value : value);
+                }));
+            inputs[input] = Multivector<double>.FromTerms(frame, terms);
+        }
+        var results = _numeric.Evaluate(macro, inputs);
+        return outputs.ToDictionary(o => o.Key, o =>
+        {
+            var value = results.TryGetValue(o.Value.Parameter, out var mv) ? mv[new BasisBlade(o.Value.Blade)] : 0.0;
+            return o.Value.Sign < 0 ? -value : value;
+        }, StringComparer.Ordinal);
+    }
+
+    private static bool UsesDifferentiation(MacroSymbol macro) => Reaches(macro, s => BoundTree.Contains<BoundDifferentiation>(s));
+
+    private static bool UsesJoin(MacroSymbol macro) => macro.Statements.Any(s => s is BoundJoinStatement);
+
+    private static bool Reaches(MacroSymbol macro, Func<BoundStatement, bool> test, HashSet<MacroSymbol>? seen = null)
+    {
+        seen ??= [];
+        if (!seen.Add(macro)) return false;
+        return macro.Statements.Any(test) || macro.Callees.Any(c => Reaches(c, test, seen));
+    }
+}
