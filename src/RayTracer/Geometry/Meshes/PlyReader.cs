@@ -183,9 +183,13 @@ public static class PlyReader
             throw new MeshFormatException(input.FileName, "too many vertices", vertexElement.Line);
         }
 
-        var vertices = new Point3D[vertexElement.Count];
-        var normals = hasNormals ? new Normal3D[vertexElement.Count] : null;
-        var uvs = hasUvs ? new TextureCoordinates[vertexElement.Count] : null;
+        // Lists grow as data arrives, so a header that declares absurd counts fails on the
+        // truncated body instead of exhausting memory up front.
+        int declaredVertices = (int)vertexElement.Count;
+        int initial = Math.Min(declaredVertices, 1 << 16);
+        var vertices = new List<Point3D>(initial);
+        var normals = hasNormals ? new List<Normal3D>(initial) : null;
+        var uvs = hasUvs ? new List<TextureCoordinates>(initial) : null;
         var indices = new List<int>();
         bool facesSeen = false;
         var values = new double[Math.Max(1, vertexElement.Properties.Count)];
@@ -241,9 +245,9 @@ public static class PlyReader
                         for (long k = 2; k < count; k++)
                         {
                             long current = input.ReadInteger(property.Type, element.Name, i);
-                            AddIndex(indices, first, vertices.Length, i, input);
-                            AddIndex(indices, previous, vertices.Length, i, input);
-                            AddIndex(indices, current, vertices.Length, i, input);
+                            AddIndex(indices, first, declaredVertices, i, input);
+                            AddIndex(indices, previous, declaredVertices, i, input);
+                            AddIndex(indices, current, declaredVertices, i, input);
                             previous = current;
                         }
                     }
@@ -258,21 +262,14 @@ public static class PlyReader
 
                 if (isVertex)
                 {
-                    vertices[i] = new Point3D(values[ix], values[iy], values[iz]);
-                    if (normals is not null)
-                    {
-                        normals[i] = new Normal3D(values[inx], values[iny], values[inz]);
-                    }
-
-                    if (uvs is not null)
-                    {
-                        uvs[i] = new TextureCoordinates(values[iu], values[iv]);
-                    }
+                    vertices.Add(new Point3D(values[ix], values[iy], values[iz]));
+                    normals?.Add(new Normal3D(values[inx], values[iny], values[inz]));
+                    uvs?.Add(new TextureCoordinates(values[iu], values[iv]));
                 }
             }
         }
 
-        return new Mesh(vertices, indices.ToArray(), normals, uvs);
+        return new Mesh([.. vertices], [.. indices], normals?.ToArray(), uvs?.ToArray());
     }
 
     private static void AddIndex(List<int> indices, long index, int vertexCount, long face, PlyInput input)

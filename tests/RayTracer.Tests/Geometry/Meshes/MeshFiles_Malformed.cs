@@ -51,6 +51,16 @@ public class MeshFiles_Malformed
     }
 
     [Fact]
+    public void AbsurdDeclaredCountsFailOnTheTruncatedBodyNotOnMemory()
+    {
+        string header = "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\nproperty double x\nproperty double y\nproperty double z\nend_header\n";
+        byte[] bytes = [.. Encoding.ASCII.GetBytes(header), .. new byte[30]];
+        var e = Assert.Throws<MeshFormatException>(() => PlyReader.Read(new MemoryStream(bytes), "huge.ply"));
+        Assert.Contains("vertex 1", e.Message);
+        Assert.Equal(bytes.Length, e.ByteOffset);
+    }
+
+    [Fact]
     public void MissingEndHeaderIsReported()
     {
         MeshFormatException e = ReadPly("ply\nformat ascii 1.0\nelement vertex 0\n");
