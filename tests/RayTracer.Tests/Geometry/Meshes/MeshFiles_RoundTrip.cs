@@ -52,6 +52,34 @@ public class MeshFiles_RoundTrip
         }
     }
 
+    [Theory]
+    [InlineData("mesh.ply", false)]
+    [InlineData("mesh.PLY", true)]
+    [InlineData("mesh.stl", false)]
+    [InlineData("mesh.stl", true)]
+    public void MeshFileDispatchesOnTheExtension(string name, bool ascii)
+    {
+        string dir = Directory.CreateTempSubdirectory("rt-mesh").FullName;
+        try
+        {
+            string path = Path.Combine(dir, name);
+            Mesh mesh = MeshSamples.FloatExactSoup(20, 9);
+            MeshFile.Write(mesh, path, ascii);
+            Mesh read = MeshFile.Read(path);
+            Assert.Equal(mesh.TriangleCount, read.TriangleCount);
+            for (int i = 0; i < mesh.Indices.Length; i++)
+            {
+                Assert.Equal(mesh.Vertices[mesh.Indices[i]], read.Vertices[read.Indices[i]]);
+            }
+
+            Assert.Throws<MeshFormatException>(() => MeshFile.Read(Path.ChangeExtension(path, ".obj")));
+        }
+        finally
+        {
+            Directory.Delete(dir, true);
+        }
+    }
+
     [Fact]
     public void PlyReaderSplitsPolygonsAndSkipsUnknownElements()
     {
