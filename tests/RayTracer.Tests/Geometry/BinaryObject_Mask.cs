@@ -1,0 +1,23 @@
+using RayTracer.Geometry;
+using RayTracer.Geometry.Universal;
+using RayTracer.Util;
+
+namespace RayTracer.Tests.Geometry;
+
+public class BinaryObject_Mask
+{
+    [Fact]
+    public void BinaryObjectShowsTheBaseSurfaceOnlyWhereTheMaskIsSet()
+    {
+        // Keep the half of the sphere with u < 0.5 (azimuth from +z towards +x below π, i.e. x > 0).
+        var masked = new BinaryObject(new Sphere(Point3D.Origin, 1), sr => sr.TextureCoordinates.u < 0.5);
+        var sr = new ShadingRecord(null);
+        // Coming from +x the front (x > 0) is kept.
+        Assert.True(masked.Hit(new Ray(new Point3D(5, 0.1, 0.2), new Vector3D(-1, 0, 0)), out double t, sr));
+        Assert.True(Math.Abs(t - (5 - Math.Sqrt(1 - 0.05))) < 1e-9);
+        // Coming from -x the front is cut away; the ray goes on to the kept back half.
+        Assert.True(masked.Hit(new Ray(new Point3D(-5, 0.1, 0.2), new Vector3D(1, 0, 0)), out t, sr));
+        Assert.True(Math.Abs(t - (5 + Math.Sqrt(1 - 0.05))) < 1e-9);
+        Assert.True(new Ray(new Point3D(-5, 0.1, 0.2), new Vector3D(1, 0, 0)).At(t).x > 0);
+    }
+}
