@@ -3,7 +3,7 @@ namespace GMac.Cli.Commands;
 /// <summary>The table of commands and the top-level help.</summary>
 internal static class CommandLine
 {
-    private static readonly ICommand[] Commands = [new CheckCommand()];
+    private static readonly ICommand[] Commands = [new GenerateCommand(), new CheckCommand(), new ShowCommand(), new VerifyCommand()];
 
     public static int Run(IReadOnlyList<string> args, TextWriter output, TextWriter error)
     {

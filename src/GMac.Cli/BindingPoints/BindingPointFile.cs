@@ -1,0 +1,15 @@
+namespace GMac.Cli.BindingPoints;
+
+/// <summary>
+/// A C# file split into lines (each with its own line break) with the binding points found in
+/// it, the problems found while reading them, and the identifiers used outside them.
+/// </summary>
+internal sealed record BindingPointFile(
+    SourceText Source,
+    IReadOnlyList<string> Lines,
+    IReadOnlyList<BindingPoint> Points,
+    IReadOnlyList<BindingDiagnostic> Diagnostics,
+    IReadOnlySet<string> Identifiers)
+{
+    public string Path => Source.Path;
+}

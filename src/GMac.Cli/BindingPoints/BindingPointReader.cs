@@ -1,0 +1,225 @@
+using System.Text.RegularExpressions;
+using GMac.Core.Numerics;
+using GMac.Dsl.Generation;
+using Microsoft.CodeAnalysis;
+using Microsoft.CodeAnalysis.CSharp;
+using Microsoft.CodeAnalysis.CSharp.Syntax;
+
+namespace GMac.Cli.BindingPoints;
+
+/// <summary>
+/// Finds the binding points of a C# file through Roslyn's region directives (so regions inside
+/// strings or comments do not count) and reads their <c>//GMac.</c> lines as C# invocations.
+/// </summary>
+internal static partial class BindingPointReader
+{
+    public const string LinePrefix = "//GMac.";
+
+    /// <summary>Cheap test that lets the tool skip parsing files that cannot hold a binding point.</summary>
+    public static bool MayContainBindingPoints(string text) => text.Contains("GMac", StringComparison.Ordinal);
+
+    public static BindingPointFile Read(SourceText source)
+    {
+        var path = source.Path;
+        var tree = CSharpSyntaxTree.ParseText(source.Text, path: path);
+        var root = tree.GetRoot();
+        var lines = SplitLines(source.Text);
+        var diagnostics = new List<BindingDiagnostic>();
+        var points = new List<BindingPoint>();
+        var open = new Stack<(int Line, int Column, string? Macro)>();
+
+        foreach (var directive in root.DescendantTrivia()
+                     .Where(t => t.IsKind(SyntaxKind.RegionDirectiveTrivia) || t.IsKind(SyntaxKind.EndRegionDirectiveTrivia))
+                     .Select(t => (DirectiveTriviaSyntax)t.GetStructure()!))
+        {
+            var position = tree.GetLineSpan(directive.Span).StartLinePosition;
+            var line = position.Line;
+            var column = position.Character + 1;
+            if (directive is RegionDirectiveTriviaSyntax)
+            {
+                var header = RegionHeader().Match(lines[line]);
+                string? macro = null;
+                if (header.Success)
+                {
+                    macro = header.Groups["name"].Value;
+                    if (!Identifier().IsMatch(macro))
+                    {
+                        diagnostics.Add(new(path, line + 1, column, "GMAC0408", $"'#region GMac :' must be followed by a macro name, not '{macro}'"));
+                        macro = "";
+                    }
+                }
+                if (open.Any(o => o.Macro is not null))
+                {
+                    var outer = open.First(o => o.Macro is not null);
+                    diagnostics.Add(new(path, line + 1, column, "GMAC0403",
+                        $"region nested inside the GMac region of line {outer.Line + 1}: its body is generated, so it cannot hold other regions"));
+                }
+                open.Push((line, column, macro));
+                continue;
+            }
+            if (open.Count == 0)
+            {
+                diagnostics.Add(new(path, line + 1, column, "GMAC0401", "#endregion without a matching #region"));
+                continue;
+            }
+            var region = open.Pop();
+            if (region.Macro is { Length: > 0 } name && !open.Any(o => o.Macro is not null))
+                points.Add(ReadPoint(path, lines, name, region.Line, line, diagnostics));
+        }
+        foreach (var region in open)
+            diagnostics.Add(new(path, region.Line + 1, region.Column, "GMAC0402", "#region without a matching #endregion"));
+
+        var bodies = points.Select(p => (Start: tree.GetText().Lines[p.RegionLine].End, End: tree.GetText().Lines[p.EndRegionLine].Start)).ToList();
+        var identifiers = root.DescendantTokens()
+            .Where(t => t.IsKind(SyntaxKind.IdentifierToken) && !bodies.Any(b => t.SpanStart >= b.Start && t.SpanStart < b.End))
+            .Select(t => t.ValueText)
+            .ToHashSet(StringComparer.Ordinal);
+        diagnostics.Sort((a, b) => a.Line != b.Line ? a.Line.CompareTo(b.Line) : a.Column.CompareTo(b.Column));
+        return new BindingPointFile(source, lines, points, diagnostics, identifiers);
+    }
+
+    /// <summary>Lines with their own terminators, so joining them gives the text back byte for byte.</summary>
+    public static List<string> SplitLines(string text)
+    {
+        var lines = new List<string>();
+        var start = 0;
+        for (var i = 0; i < text.Length; i++)
+        {
+            if (text[i] == '\n' || (text[i] == '\r' && (i + 1 >= text.Length || text[i + 1] != '\n')))
+            {
+                lines.Add(text[start..(i + 1)]);
+                start = i + 1;
+            }
+        }
+        lines.Add(text[start..]);
+        return lines;
+    }
+
+    private static BindingPoint ReadPoint(string path, IReadOnlyList<string> lines, string macro, int regionLine, int endLine, List<BindingDiagnostic> diagnostics)
+    {
+        var indent = LeadingWhiteSpace(lines[regionLine]);
+        var bindings = new List<BindingLine>();
+        for (var i = regionLine + 1; i < endLine; i++)
+        {
+            var text = lines[i].TrimEnd('\r', '\n');
+            var trimmed = text.TrimStart();
+            if (!trimmed.StartsWith(LinePrefix, StringComparison.Ordinal)) continue;
+            var column = text.Length - trimmed.Length + 1;
+            if (ReadLine(trimmed[2..], i + 1, column, out var error) is { } binding) bindings.Add(binding);
+            else diagnostics.Add(new(path, i + 1, column, "GMAC0404", error!));
+        }
+        return new BindingPoint(macro, regionLine, endLine, indent, bindings);
+    }
+
+    /// <summary>Reads <c>GMac.Bind(…);</c>, <c>GMac.AssumeMin(…);</c> or <c>GMac.AssumeMax(…);</c>.</summary>
+    private static BindingLine? ReadLine(string code, int line, int column, out string? error)
+    {
+        error = null;
+        var expression = SyntaxFactory.ParseExpression(code, consumeFullText: false);
+        var rest = code[expression.FullSpan.End..];
+        if (expression.ContainsDiagnostics || !LineRest().IsMatch(rest))
+        {
+            var first = expression.GetDiagnostics().FirstOrDefault()?.GetMessage();
+            error = $"malformed binding line '//{code.Trim()}'{(first is null ? "" : $": {first}")}; expected e.g. //GMac.Bind(\"u.e1\", \"<u.x>\");";
+            return null;
+        }
+        if (expression is not InvocationExpressionSyntax
+            {
+                Expression: MemberAccessExpressionSyntax { Expression: IdentifierNameSyntax { Identifier.ValueText: "GMac" } } member,
+            } call)
+        {
+            error = $"'//{code.Trim()}' is not a call of GMac.Bind, GMac.AssumeMin or GMac.AssumeMax";
+            return null;
+        }
+        var args = call.ArgumentList.Arguments;
+        switch (member.Name.Identifier.ValueText)
+        {
+            case "Bind" when args.Count == 2:
+            {
+                var name = StringValue(args[0]);
+                var dot = name?.IndexOf('.') ?? -1;
+                if (name is null || dot <= 0 || dot == name.Length - 1)
+                {
+                    error = "the first argument of a two-argument GMac.Bind must be a string \"parameter.blade\", such as \"v.e1\" or \"angle.1\"";
+                    return null;
+                }
+                var value = StringValue(args[1]);
+                var isTemplate = value is not null;
+                var text = value ?? args[1].Expression.ToString();
+                var target = isTemplate ? TemplateTarget(text) : text;
+                var spec = new CoefficientBindingSpec(name[..dot].Trim(), name[(dot + 1)..].Trim(), text, isTemplate, line, column);
+                return new BindingLine(spec, target is not null && IsAssignable(target), text);
+            }
+            case "Bind" when args.Count == 3:
+            {
+                var parameter = StringValue(args[0]);
+                var binding = StringValue(args[1]);
+                if (parameter is null || binding is null || parameter.Contains('.'))
+                {
+                    error = "a three-argument GMac.Bind takes a parameter name and a class binding name as strings, then the C# object, e.g. GMac.Bind(\"u\", \"Vector3D\", \"u\")";
+                    return null;
+                }
+                var target = StringValue(args[2]) ?? args[2].Expression.ToString();
+                var spec = new ClassBindingSpec(parameter.Trim(), binding.Trim(), target, line, column);
+                return new BindingLine(spec, IsAssignable(target), target);
+            }
+            case "Bind":
+                error = $"GMac.Bind takes 2 or 3 arguments, not {args.Count}";
+                return null;
+            case "AssumeMin" or "AssumeMax" when args.Count == 2:
+            {
+                var subject = StringValue(args[0]) ?? args[0].Expression.ToString();
+                var boundText = StringValue(args[1]) ?? args[1].Expression.ToString();
+                if (!Rational.TryParse(boundText.Replace(" ", ""), out var bound))
+                {
+                    error = $"the bound '{boundText}' of GMac.{member.Name.Identifier.ValueText} is not a number";
+                    return null;
+                }
+                var spec = new AssumptionSpec(subject, bound, member.Name.Identifier.ValueText == "AssumeMin", line, column);
+                return new BindingLine(spec, false, subject);
+            }
+            case "AssumeMin" or "AssumeMax":
+                error = $"GMac.{member.Name.Identifier.ValueText} takes 2 arguments (expression, bound), not {args.Count}";
+                return null;
+            default:
+                error = $"unknown binding command 'GMac.{member.Name.Identifier.ValueText}'; expected Bind, AssumeMin or AssumeMax";
+                return null;
+        }
+    }
+
+    private static string? StringValue(ArgumentSyntax argument) =>
+        argument.Expression is LiteralExpressionSyntax literal && literal.IsKind(SyntaxKind.StringLiteralExpression) ? literal.Token.ValueText : null;
+
+    /// <summary>"&lt;wx&gt;" → "wx"; anything else is no target.</summary>
+    private static string? TemplateTarget(string text)
+    {
+        text = text.Trim();
+        return text.Length > 2 && text[0] == '<' && text[^1] == '>' && text.IndexOf('<', 1) < 0 ? text[1..^1].Trim() : null;
+    }
+
+    /// <summary>A variable, field, property or element: something C# lets the generated code assign to.</summary>
+    public static bool IsAssignable(string text)
+    {
+        var expression = SyntaxFactory.ParseExpression(text);
+        if (expression.ContainsDiagnostics) return false;
+        while (expression is ParenthesizedExpressionSyntax p) expression = p.Expression;
+        return expression is IdentifierNameSyntax or ElementAccessExpressionSyntax
+            || expression is MemberAccessExpressionSyntax m && m.IsKind(SyntaxKind.SimpleMemberAccessExpression) || expression.IsKind(SyntaxKind.PointerMemberAccessExpression);
+    }
+
+    private static string LeadingWhiteSpace(string line)
+    {
+        var i = 0;
+        while (i < line.Length && line[i] is ' ' or '\t') i++;
+        return line[..i];
+    }
+
+    [GeneratedRegex(@"^\s*#\s*region\s+GMac\s*:\s*(?<name>.*?)\s*$")]
+    private static partial Regex RegionHeader();
+
+    [GeneratedRegex(@"^[A-Za-z_][A-Za-z0-9_]*$")]
+    private static partial Regex Identifier();
+
+    [GeneratedRegex(@"^\s*;?\s*(//.*)?$")]
+    private static partial Regex LineRest();
+}

@@ -1,0 +1,28 @@
+using GMac.Core.Symbolic;
+using GMac.Dsl;
+using GMac.Dsl.Generation;
+
+namespace GMac.Cli.BindingPoints;
+
+/// <summary>
+/// A loaded GMacDSL project with its code generator and the on-disk simplification cache, shared
+/// by every binding point of one run.
+/// </summary>
+internal sealed class GenerationContext
+{
+    public const string DefaultCacheFolder = ".gmac-cache";
+
+    public GenerationContext(DslProject project, string? cacheDirectory)
+    {
+        Project = project;
+        Cache = new SimplificationCache(cacheDirectory);
+        Generator = new MacroCodeGenerator(project, new CachingCasAdapter(new RuleBasedCas(), Cache));
+    }
+
+    public DslProject Project { get; }
+    public SimplificationCache Cache { get; }
+    public MacroCodeGenerator Generator { get; }
+
+    /// <summary>The cache folder used when none is given: <c>.gmac-cache/</c> inside the DSL folder (gitignored).</summary>
+    public static string DefaultCacheDirectory(string dslDirectory) => Path.Combine(Path.GetFullPath(dslDirectory), DefaultCacheFolder);
+}

@@ -1,0 +1,116 @@
+using System.Diagnostics;
+using System.Globalization;
+using GMac.Cli.BindingPoints;
+
+namespace GMac.Cli.Commands;
+
+/// <summary>
+/// <c>gmac generate [PATH…] --dsl DIR [--check] [--stats] [--cache DIR]</c>: rewrites every
+/// binding point under the paths; with <c>--check</c> only reports files that are out of date.
+/// </summary>
+internal sealed class GenerateCommand : ICommand
+{
+    private static readonly HashSet<string> FlagNames = ["--check", "--stats"];
+
+    public string Name => "generate";
+    public string Summary => "rewrite the binding points of C# files under PATH (default .)";
+    public string Usage => "gmac generate [PATH...] --dsl DIR [--check] [--stats] [--cache DIR]";
+
+    public int Run(IReadOnlyList<string> args, TextWriter output, TextWriter error)
+    {
+        if (CommandOptions.TryParse(args, FlagNames, new HashSet<string>(), out var options) is { } problem)
+        {
+            error.WriteLine($"gmac generate: {problem}");
+            error.WriteLine($"usage: {Usage}");
+            return ExitCodes.Usage;
+        }
+        var watch = Stopwatch.StartNew();
+        var context = DslLoader.Load(options.Dsl!, options.Cache, error);
+        if (context is null) return ExitCodes.Diagnostics;
+        var paths = options.Positional.Count > 0 ? options.Positional : ["."];
+        return Execute(context, paths, options.Flags.Contains("--check"), options.Flags.Contains("--stats"), output, error, watch);
+    }
+
+    /// <summary>Generates with an already loaded DSL (what tests and the other commands share).</summary>
+    public static int Execute(GenerationContext context, IReadOnlyList<string> paths, bool check, bool stats, TextWriter output, TextWriter error, Stopwatch? watch = null)
+    {
+        watch ??= Stopwatch.StartNew();
+        var hitsBefore = context.Cache.Hits;
+        var missesBefore = context.Cache.Misses;
+        var (files, missing) = SourceScanner.Find(paths);
+        foreach (var m in missing) error.WriteLine(m);
+        int scanned = 0, regions = 0, changed = 0, failed = missing.Count, outOfDate = 0;
+        foreach (var path in files)
+        {
+            scanned++;
+            var generation = GenerateFile(path, context, stats, error);
+            if (generation is null)
+            {
+                failed++;
+                continue;
+            }
+            if (generation.File.Points.Count == 0 && generation.Succeeded) continue;
+            if (!generation.Succeeded)
+            {
+                foreach (var d in generation.Diagnostics) error.WriteLine(d);
+                failed++;
+                continue;
+            }
+            regions += generation.Regions.Count;
+            if (!generation.Changed) continue;
+            if (check)
+            {
+                outOfDate++;
+                var stale = StaleRegions(generation).ToList();
+                foreach (var r in stale)
+                    error.WriteLine(new BindingDiagnostic(path, r.Point.RegionLineNumber, 1, "GMAC0410", $"binding point '{r.Point.MacroName}' is out of date; run 'gmac generate'"));
+                continue;
+            }
+            if (SafeFileWriter.Replace(path, generation.File.Source.Encode(generation.NewText)) is { } why)
+            {
+                error.WriteLine(new BindingDiagnostic(path, generation.File.Points[0].RegionLineNumber, 1, "GMAC0406", $"cannot write the generated code: {why}; the file is unchanged"));
+                failed++;
+                continue;
+            }
+            changed++;
+        }
+        var hits = context.Cache.Hits - hitsBefore;
+        var misses = context.Cache.Misses - missesBefore;
+        output.WriteLine(string.Create(CultureInfo.InvariantCulture,
+            $"gmac generate: {scanned} file(s) scanned, {regions} region(s) generated, {(check ? $"{outOfDate} file(s) out of date" : $"{changed} file(s) changed")}, {failed} file(s) with errors, cache {hits} hit(s) {misses} miss(es), {watch.Elapsed.TotalMilliseconds:F0} ms"));
+        return failed > 0 || outOfDate > 0 ? ExitCodes.Diagnostics : ExitCodes.Success;
+    }
+
+    /// <summary>Reads and generates one file; null (with a diagnostic) when it cannot be read.</summary>
+    internal static FileGeneration? GenerateFile(string path, GenerationContext context, bool stats, TextWriter error)
+    {
+        SourceText source;
+        try
+        {
+            source = SourceText.Read(path);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            error.WriteLine(new BindingDiagnostic(path, 1, 1, "GMAC0407", $"cannot read file: {e.Message}"));
+            return null;
+        }
+        var file = BindingPointReader.MayContainBindingPoints(source.Text)
+            ? BindingPointReader.Read(source)
+            : new BindingPointFile(source, [], [], [], new HashSet<string>());
+        return BindingPointGenerator.Generate(file, context, stats);
+    }
+
+    /// <summary>Regions whose body would change; the first region when only their layout would.</summary>
+    private static IEnumerable<GeneratedRegion> StaleRegions(FileGeneration generation)
+    {
+        var lines = generation.File.Lines;
+        var stale = generation.Regions.Where(r =>
+        {
+            var body = string.Concat(Enumerable.Range(r.Point.RegionLine + 1, r.Point.EndRegionLine - r.Point.RegionLine - 1)
+                .Select(i => lines[i])
+                .Where(l => !l.TrimStart().StartsWith(BindingPointReader.LinePrefix, StringComparison.Ordinal)));
+            return !string.Equals(body, r.Code, StringComparison.Ordinal);
+        }).ToList();
+        return stale.Count > 0 ? stale : generation.Regions.Take(1);
+    }
+}

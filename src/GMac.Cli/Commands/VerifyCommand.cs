@@ -1,0 +1,117 @@
+using System.Globalization;
+using GMac.Cli.BindingPoints;
+using GMac.Cli.Verification;
+using GMac.Dsl.Generation;
+
+namespace GMac.Cli.Commands;
+
+/// <summary>
+/// <c>gmac verify [PATH…] --dsl DIR [--seed N] [--cache DIR]</c>: compiles the code of every binding
+/// point in memory and compares it with the numeric engine on random inputs.
+/// </summary>
+internal sealed class VerifyCommand : ICommand
+{
+    private static readonly HashSet<string> ValuedNames = ["--seed"];
+
+    public string Name => "verify";
+    public string Summary => "compile each binding point in memory and check it against the numeric engine";
+    public string Usage => "gmac verify [PATH...] --dsl DIR [--seed N] [--cache DIR]";
+
+    public int Run(IReadOnlyList<string> args, TextWriter output, TextWriter error)
+    {
+        var problem = CommandOptions.TryParse(args, new HashSet<string>(), ValuedNames, out var options);
+        var seed = 1;
+        if (problem is null && options.Values.Count > 0 && !int.TryParse(options.Values[^1].Value, NumberStyles.Integer, CultureInfo.InvariantCulture, out seed))
+            problem = $"--seed needs an integer, not '{options.Values[^1].Value}'";
+        if (problem is not null)
+        {
+            error.WriteLine($"gmac verify: {problem}");
+            error.WriteLine($"usage: {Usage}");
+            return ExitCodes.Usage;
+        }
+        var context = DslLoader.Load(options.Dsl!, options.Cache, error);
+        if (context is null) return ExitCodes.Diagnostics;
+        return Execute(context, options.Positional.Count > 0 ? options.Positional : ["."], seed, output, error);
+    }
+
+    public static int Execute(GenerationContext context, IReadOnlyList<string> paths, int seed, TextWriter output, TextWriter error)
+    {
+        var (files, missing) = SourceScanner.Find(paths);
+        foreach (var m in missing) error.WriteLine(m);
+        var failures = missing.Count;
+        var regions = new List<(string Path, GeneratedRegion Region)>();
+        foreach (var path in files)
+        {
+            var generation = GenerateCommand.GenerateFile(path, context, stats: false, error);
+            if (generation is null)
+            {
+                failures++;
+                continue;
+            }
+            foreach (var d in generation.Diagnostics) error.WriteLine(d);
+            failures += generation.Diagnostics.Count;
+            regions.AddRange(generation.Regions.Where(r => r.Outcome is { Succeeded: true, Plan: not null }).Select(r => (path, r)));
+        }
+
+        var remapped = regions.Select(r => KernelCompiler.Remap(r.Region.Outcome!.Result!.Block, r.Region.Outcome.Plan!.InputTexts.Keys)).ToList();
+        var kernels = KernelCompiler.Compile(remapped);
+        var passed = 0;
+        for (var k = 0; k < regions.Count; k++)
+        {
+            var (path, region) = regions[k];
+            var point = region.Point;
+            var (kernel, compileError) = kernels[k];
+            if (kernel is null)
+            {
+                error.WriteLine(new BindingDiagnostic(path, point.RegionLineNumber, 1, "GMAC0421", $"the code of '{point.MacroName}' does not compile: {compileError}"));
+                failures++;
+                continue;
+            }
+            var plan = region.Outcome!.Plan!;
+            var tolerance = RegionVerifier.UsesDifferentiation(context.Project, plan.Macro) ? RegionVerifier.DifferentiationTolerance : RegionVerifier.Tolerance;
+            var assumptions = point.Specs.OfType<AssumptionSpec>().ToList();
+            var normalized = NormalizedAtoms(context, point, plan);
+            var result = RegionVerifier.Verify(kernel, plan, assumptions, normalized, tolerance, seed + k);
+            if (!result.Passed)
+            {
+                error.WriteLine(new BindingDiagnostic(path, point.RegionLineNumber, 1, "GMAC0420", $"'{point.MacroName}' disagrees with the numeric engine: {result.Failure}"));
+                failures++;
+                continue;
+            }
+            passed++;
+            output.WriteLine(string.Create(CultureInfo.InvariantCulture,
+                $"{path}({point.RegionLineNumber},1): ok {point.MacroName}: {kernel.Outputs.Count} output(s), {result.Samples} samples, max relative error {result.MaxRelativeError:0.0e+00} (tolerance {result.Tolerance:0e+00})"));
+        }
+        output.WriteLine($"gmac verify: {regions.Count} region(s), {passed} passed, {failures} problem(s)");
+        return failures > 0 ? ExitCodes.Diagnostics : ExitCodes.Success;
+    }
+
+    /// <summary>
+    /// For each input of a normalized class, the atoms that feed it directly: random values are scaled
+    /// so their squares sum to one, as the generated code may assume.
+    /// </summary>
+    private static IReadOnlyList<IReadOnlyList<string>> NormalizedAtoms(GenerationContext context, BindingPoint point, BindingPointPlan plan)
+    {
+        var groups = new List<IReadOnlyList<string>>();
+        foreach (var input in plan.Macro.Inputs.Where(i => i.Class is { IsNormalized: true }))
+        {
+            var texts = new HashSet<string>(StringComparer.Ordinal);
+            foreach (var spec in point.Specs)
+            {
+                switch (spec)
+                {
+                    case CoefficientBindingSpec c when c.Parameter == input.Name:
+                        var t = c.Value.Trim();
+                        texts.Add(c.IsTemplate && t.StartsWith('<') && t.EndsWith('>') ? t[1..^1].Trim() : t);
+                        break;
+                    case ClassBindingSpec c when c.Parameter == input.Name:
+                        foreach (var text in plan.InputTexts.Values.Where(v => v.StartsWith(c.Target.Trim() + ".", StringComparison.Ordinal))) texts.Add(text);
+                        break;
+                }
+            }
+            groups.Add(plan.InputTexts.Where(x => texts.Contains(x.Value.Trim())).Select(x => x.Key).ToList());
+        }
+        _ = context;
+        return groups;
+    }
+}
