@@ -98,6 +98,18 @@ public sealed class Bvh : AccelerationStructure
             ref Bvh4Node node = ref nodes[current];
             int mask = r.Hits(ref node, t, out Vector256<double> enter);
 
+            // A single interior child needs no trip through the stack.
+            if (mask != 0 && (mask & (mask - 1)) == 0)
+            {
+                int lane = BitOperations.TrailingZeroCount(mask);
+                int only = lane switch { 0 => node.Child0, 1 => node.Child1, 2 => node.Child2, _ => node.Child3 };
+                if (only >= 0)
+                {
+                    current = only;
+                    continue;
+                }
+            }
+
             // Push the children that the ray enters, farthest first, so the nearest is popped next.
             int pushedFrom = sp;
             while (mask != 0)
@@ -466,12 +478,14 @@ public sealed class Bvh : AccelerationStructure
             Vector256<double> ax = (node.MinX - _ox) * _ix, bx = (node.MaxX - _ox) * _ix;
             Vector256<double> ay = (node.MinY - _oy) * _iy, by = (node.MaxY - _oy) * _iy;
             Vector256<double> az = (node.MinZ - _oz) * _iz, bz = (node.MaxZ - _oz) * _iz;
-            Vector256<double> t0 = Vector256.Max(
-                Vector256.Max(Vector256.Min(ax, bx), Vector256.Min(ay, by)),
-                Vector256.Max(Vector256.Min(az, bz), Vector256<double>.Zero));
-            Vector256<double> t1 = Vector256.Min(
-                Vector256.Min(Vector256.Max(ax, bx), Vector256.Max(ay, by)),
-                Vector256.Min(Vector256.Max(az, bz), Vector256.Create(tMax)));
+            // The native forms map to single instructions; they differ from Min/Max only for NaN
+            // and signed zeros, and the finite reciprocals above never produce NaN.
+            Vector256<double> t0 = Vector256.MaxNative(
+                Vector256.MaxNative(Vector256.MinNative(ax, bx), Vector256.MinNative(ay, by)),
+                Vector256.MaxNative(Vector256.MinNative(az, bz), Vector256<double>.Zero));
+            Vector256<double> t1 = Vector256.MinNative(
+                Vector256.MinNative(Vector256.MaxNative(ax, bx), Vector256.MaxNative(ay, by)),
+                Vector256.MinNative(Vector256.MaxNative(az, bz), Vector256.Create(tMax)));
             enter = t0;
             return (int)Vector256.LessThanOrEqual(t0, t1 * FarSlackVector).ExtractMostSignificantBits() & node.ValidMask;
         }
