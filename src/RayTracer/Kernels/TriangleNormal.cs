@@ -1,0 +1,29 @@
+using RayTracer.Util;
+
+namespace RayTracer.Kernels;
+
+/// <summary>
+/// The normal of a triangle as (v1 − v0) ∧ (v2 − v0) ⌋ I⁻¹, the cross product written in geometric
+/// algebra (thesis §4.10). The body is generated from the GMacDSL macro NormalToVectors.
+/// </summary>
+internal static class TriangleNormal
+{
+    /// <summary>The unnormalized normal; its length is twice the triangle's area.</summary>
+    public static Normal3D Of(Point3D v0, Point3D v1, Point3D v2)
+    {
+        var u = v1 - v0;
+        var v = v2 - v0;
+        var n = new Normal3D();
+
+        #region GMac : NormalToVectors
+        //GMac.Bind("u", "Vector3D", u);
+        //GMac.Bind("v", "Vector3D", v);
+        //GMac.Bind("w", "Normal3D", n);
+        n.x = u.y * v.z - u.z * v.y;
+        n.y = u.z * v.x - u.x * v.z;
+        n.z = u.x * v.y - u.y * v.x;
+        #endregion
+
+        return n;
+    }
+}
