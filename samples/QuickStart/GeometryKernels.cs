@@ -1,0 +1,125 @@
+namespace QuickStart;
+
+/// <summary>
+/// Three formulas whose bodies GMac generates at build time from the macros of the DSL library
+/// (the lines between the //GMac. lines and #endregion are rewritten by `gmac generate`).
+/// </summary>
+public static class GeometryKernels
+{
+    /// <summary>w = (u ∧ v) ⌋ I⁻¹: the normal to two vectors (thesis §4.10.1).</summary>
+    public static Vec3 NormalToVectors(Vec3 u, Vec3 v)
+    {
+        double wx, wy, wz;
+
+        #region GMac : NormalToVectors
+        //GMac.Bind("u", "Vector3D", u);
+        //GMac.Bind("v.e1", "<v.x>");
+        //GMac.Bind("v.e2", "<v.y>");
+        //GMac.Bind("v.e3", "<v.z>");
+        //GMac.Bind("w.e1", "<wx>");
+        //GMac.Bind("w.e2", "<wy>");
+        //GMac.Bind("w.e3", "<wz>");
+        wx = u.y * v.z - u.z * v.y;
+        wy = u.z * v.x - u.x * v.z;
+        wz = u.x * v.y - u.y * v.x;
+        #endregion
+
+        return new Vec3(wx, wy, wz);
+    }
+
+    /// <summary>
+    /// The sphere through four points in the conformal model: σ = p1 ∧ p2 ∧ p3 ∧ p4 and its dual
+    /// ω = α(no + c + ½(c² − r²) ni), from which the centre c and radius r are read.
+    /// </summary>
+    public static (Vec3 Centre, double Radius) SphereThroughPoints(Vec3 a, Vec3 b, Vec3 c, Vec3 d)
+    {
+        double sNo, sX, sY, sZ, sNi;
+
+        #region GMac : SphereThroughPoints
+        //GMac.Bind("p1", "ConformalPoint3D", a);
+        //GMac.Bind("p2", "ConformalPoint3D", b);
+        //GMac.Bind("p3", "ConformalPoint3D", c);
+        //GMac.Bind("p4", "ConformalPoint3D", d);
+        //GMac.Bind("omega.no", "<sNo>");
+        //GMac.Bind("omega.e1", "<sX>");
+        //GMac.Bind("omega.e2", "<sY>");
+        //GMac.Bind("omega.e3", "<sZ>");
+        //GMac.Bind("omega.ni", "<sNi>");
+        double tmp0 = d.x - a.x;
+        double tmp1 = d.y - a.y;
+        double tmp2 = d.z - a.z;
+        double tmp3 = a.y * a.y + a.x * a.x + a.z * a.z;
+        double tmp4 = 0.5 * (d.y * d.y + d.z * d.z + d.x * d.x - tmp3);
+        double tmp5 = c.x - a.x;
+        double tmp6 = c.y - a.y;
+        double tmp7 = c.z - a.z;
+        double tmp8 = 0.5 * (c.x * c.x + c.y * c.y + c.z * c.z - tmp3);
+        double tmp9 = tmp1 * tmp5 - tmp0 * tmp6;
+        double tmp10 = tmp2 * tmp5 - tmp0 * tmp7;
+        double tmp11 = tmp2 * tmp6 - tmp1 * tmp7;
+        double tmp12 = tmp4 * tmp5 - tmp0 * tmp8;
+        double tmp13 = tmp4 * tmp6 - tmp1 * tmp8;
+        double tmp14 = tmp4 * tmp7 - tmp2 * tmp8;
+        double tmp15 = b.x - a.x;
+        double tmp16 = b.y - a.y;
+        double tmp17 = b.z - a.z;
+        double tmp18 = 0.5 * (b.x * b.x + b.y * b.y + b.z * b.z - tmp3);
+        double tmp19 = tmp11 * tmp15 + tmp17 * tmp9 - tmp16 * tmp10;
+        double tmp20 = tmp13 * tmp15 + tmp18 * tmp9 - tmp12 * tmp16;
+        double tmp21 = tmp14 * tmp15 + tmp18 * tmp10 - tmp12 * tmp17;
+        double tmp22 = tmp11 * tmp18 + tmp14 * tmp16 - tmp13 * tmp17;
+        sNo = -tmp19;
+        sX = -tmp22;
+        sY = tmp21;
+        sZ = -tmp20;
+        sNi = 0.5 * tmp19 * tmp3 + tmp21 * a.y - tmp20 * a.z - tmp22 * a.x;
+        #endregion
+
+        var centre = new Vec3(sX / sNo, sY / sNo, sZ / sNo);
+        return (centre, Math.Sqrt(centre.Dot(centre) - 2 * sNi / sNo));
+    }
+
+    /// <summary>
+    /// Rotation of a point by an angle about the axis through a point: the Figure 6-6 twist with
+    /// its slide bound to the constant 0, which GMac folds away.
+    /// </summary>
+    public static Vec3 RotateAboutLine(Vec3 point, Vec3 through, Vec3 axis, double angle)
+    {
+        var result = new Vec3();
+
+        #region GMac : ApplyTwistToPoint3D
+        //GMac.Bind("rot_axis", "Vector3D", axis);
+        //GMac.Bind("tr_origin", "Vector3D", through);
+        //GMac.Bind("angle.1", angle);
+        //GMac.Bind("tr_param.1", "0");
+        //GMac.Bind("in_mv", "Vector3D", point);
+        //GMac.Bind("out_mv", "Vector3D", result);
+        double gmacTmp0 = 0.5 * angle;
+        double gmacTmp1 = Math.Sin(gmacTmp0) / Math.Sqrt(axis.x * axis.x + axis.y * axis.y + axis.z * axis.z);
+        double gmacTmp2 = axis.z * gmacTmp1;
+        double gmacTmp3 = -(axis.y * gmacTmp1);
+        double gmacTmp4 = axis.x * gmacTmp1;
+        double gmacTmp5 = Math.Cos(gmacTmp0);
+        double gmacTmp6 = -(gmacTmp2 * through.y) - gmacTmp3 * through.z;
+        double gmacTmp7 = gmacTmp2 * through.x - gmacTmp4 * through.z;
+        double gmacTmp8 = gmacTmp3 * through.x + gmacTmp4 * through.y;
+        double gmacTmp9 = point.x * gmacTmp5;
+        double gmacTmp10 = point.z * gmacTmp5;
+        double gmacTmp11 = point.y * gmacTmp5;
+        double gmacTmp12 = point.x * gmacTmp3;
+        double gmacTmp13 = point.y * gmacTmp4;
+        double gmacTmp14 = point.x * gmacTmp2;
+        double gmacTmp15 = point.z * gmacTmp4;
+        double gmacTmp16 = gmacTmp8 - gmacTmp10;
+        double gmacTmp17 = gmacTmp7 - gmacTmp11;
+        result.x = gmacTmp2 * (2.0 * (gmacTmp15 + gmacTmp17) - gmacTmp14) + gmacTmp3 * (2.0 * (gmacTmp16 - gmacTmp13) - gmacTmp12) + gmacTmp5 * (gmacTmp9 - 2.0 * gmacTmp6) + gmacTmp4 * gmacTmp4 * point.x;
+        double gmacTmp18 = point.y * gmacTmp2;
+        double gmacTmp19 = point.z * gmacTmp3;
+        double gmacTmp20 = gmacTmp6 - gmacTmp9;
+        result.y = gmacTmp2 * (2.0 * (-gmacTmp19 - gmacTmp20) - gmacTmp18) + gmacTmp4 * (2.0 * (gmacTmp16 - gmacTmp12) - gmacTmp13) + gmacTmp5 * (gmacTmp11 - 2.0 * gmacTmp7) + gmacTmp3 * gmacTmp3 * point.y;
+        result.z = gmacTmp3 * (2.0 * (-gmacTmp18 - gmacTmp20) - gmacTmp19) + gmacTmp4 * (2.0 * (gmacTmp14 - gmacTmp17) - gmacTmp15) + gmacTmp5 * (gmacTmp10 - 2.0 * gmacTmp8) + gmacTmp2 * gmacTmp2 * point.z;
+        #endregion
+
+        return result;
+    }
+}
