@@ -5,12 +5,12 @@ namespace GMac.Core.CodeGeneration;
 /// <summary>From symbolic evaluation to an optimized code block.</summary>
 public static class CodeGenerator
 {
+    private const int HopelessFactor = 3;
+
     public static CodeGenerationResult Generate(CodeGenerationRequest request)
     {
         request = request with { Simplify = EffectiveSimplifier(request.Simplify) };
         var candidates = new List<(CodeBlock Block, JoinMode Form)>();
-        if (request.Join != JoinMode.Split)
-            candidates.Add((Optimizer.Optimize(Build(request.Evaluate(null), [], request)), JoinMode.Joined));
         if (request.Join != JoinMode.Joined)
         {
             foreach (var statementsOnly in new[] { false, true })
@@ -20,10 +20,19 @@ public static class CodeGenerator
                 candidates.Add((Optimizer.Optimize(Build(program, recorder.Temporaries, request)), JoinMode.Split));
             }
         }
-        // The cheapest form wins; on a tie, the one with fewer temporaries, then the earlier (joined first).
+        if (request.Join != JoinMode.Split)
+        {
+            var joined = Build(request.Evaluate(null), [], request);
+            // Optimizing a fully expanded block is the slowest step; skip it when it starts far
+            // costlier than a form already found (sharing rarely recovers more than that).
+            var bestSoFar = candidates.Count == 0 ? int.MaxValue : candidates.Min(c => c.Block.Statistics().Cost);
+            if (joined.Statistics().Cost <= HopelessFactor * (long)bestSoFar)
+                candidates.Add((Optimizer.Optimize(joined), JoinMode.Joined));
+        }
+        // The cheapest form wins; on a tie, the one with fewer temporaries, then the joined (simplest) form.
         var ranked = candidates
             .Select((c, i) => (c.Block, c.Form, Stats: c.Block.Statistics(), Index: i))
-            .OrderBy(c => c.Stats.Cost).ThenBy(c => c.Stats.Temporaries).ThenBy(c => c.Index)
+            .OrderBy(c => c.Stats.Cost).ThenBy(c => c.Stats.Temporaries).ThenBy(c => c.Form == JoinMode.Joined ? 0 : 1).ThenBy(c => c.Index)
             .ToList();
         var best = ranked[0];
         var alternative = ranked.Skip(1).FirstOrDefault(c => c.Form != best.Form);

@@ -19,12 +19,12 @@ public sealed class Optimizer
         block = fold.Run(strength.Run(block));
         for (var round = 0; round < 8; round++)
         {
-            var before = block.ToString();
+            var before = (block.Statistics(), block.Statements.Count);
             block = inline.Run(block);
             block = copy.Run(fold.Run(block));
             block = dead.Run(cse.Run(block));
             block = dead.Run(cse.Run(pairs.Run(block)));
-            if (block.ToString() == before) break;
+            if ((block.Statistics(), block.Statements.Count) == before) break;
         }
         block = strength.Run(block); // CSE may expose repeated denominators
         return reuseTemporaries ? new TemporaryReusePass().Run(block) : block;

@@ -37,14 +37,22 @@ public sealed class CommonSubexpressionPass(Func<int, string> temporaryName) : I
         if (_keys.TryGetValue(e, out var key)) return key;
         var children = e.Children.Select(Key).ToList();
         if (e is SumExpr or ProductExpr)
-            children = children.OrderBy(c => c.GetHashCode()).ThenBy(c => c.ToString(), StringComparer.Ordinal).ToList();
+            children.Sort(ExprOrder.Compare);
         key = e.WithChildren(children);
         _keys[e] = key;
         return key;
     }
 
     /// <summary>The key shared by e and −e, and whether e is the negated one (a − b and b − a).</summary>
+    private readonly Dictionary<Expr, (Expr, bool)> _canonical = new();
+
     private (Expr Key, bool Negated) Canonical(Expr e)
+    {
+        if (_canonical.TryGetValue(e, out var known)) return known;
+        return _canonical[e] = ComputeCanonical(e);
+    }
+
+    private (Expr Key, bool Negated) ComputeCanonical(Expr e)
     {
         if (e is NegateExpr n)
         {
@@ -54,9 +62,7 @@ public sealed class CommonSubexpressionPass(Func<int, string> temporaryName) : I
         var key = Key(e);
         if (e is not SumExpr) return (key, false);
         var opposite = Key(ExprFactory.Sum(e.Children.Select(ExprFactory.Negate)));
-        var oppositeFirst = opposite.GetHashCode() != key.GetHashCode()
-            ? opposite.GetHashCode() < key.GetHashCode()
-            : string.CompareOrdinal(opposite.ToString(), key.ToString()) < 0;
+        var oppositeFirst = ExprOrder.Compare(opposite, key) < 0;
         return oppositeFirst ? (opposite, true) : (key, false);
     }
 
@@ -87,7 +93,15 @@ public sealed class CommonSubexpressionPass(Func<int, string> temporaryName) : I
         return best;
     }
 
-    private static int OperationCost(Expr e)
+    private readonly Dictionary<Expr, int> _costs = new();
+
+    private int OperationCost(Expr e)
+    {
+        if (_costs.TryGetValue(e, out var known)) return known;
+        return _costs[e] = ComputeCost(e);
+    }
+
+    private static int ComputeCost(Expr e)
     {
         var block = new CodeBlock([new AssignmentStatement("x", e, true)], new Dictionary<string, string>(), new Dictionary<string, string>());
         return block.Statistics().Cost;

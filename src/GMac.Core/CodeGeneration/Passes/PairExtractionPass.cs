@@ -49,11 +49,10 @@ public sealed class PairExtractionPass(Func<int, string> temporaryName) : IOptim
         return (new Pair(x.Item, second ? ExprFactory.Negate(y.Item) : y.Item), negated);
     }
 
-    private static int Order(Expr a, Expr b)
-    {
-        var c = a.GetHashCode().CompareTo(b.GetHashCode());
-        return c != 0 ? c : string.CompareOrdinal(a.ToString(), b.ToString());
-    }
+    private static int Order(Expr a, Expr b) => ExprOrder.Compare(a, b);
+
+    /// <summary>Nodes with more items than this are not searched for pairs (the count grows quadratically).</summary>
+    private const int MaxItems = 12;
 
     private static (Pair? Pair, bool IsProduct) FindBest(CodeBlock block)
     {
@@ -66,6 +65,7 @@ public sealed class PairExtractionPass(Func<int, string> temporaryName) : IOptim
             if (node is not (SumExpr or ProductExpr)) continue;
             var isProduct = node is ProductExpr;
             var items = Items(node);
+            if (items.Count > MaxItems) continue;
             var seen = new HashSet<(Pair, bool)>();
             for (var i = 0; i < items.Count; i++)
             for (var j = i + 1; j < items.Count; j++)
