@@ -9,7 +9,7 @@ namespace RayTracer.Acceleration;
 /// The primitives of an acceleration structure in the order its leaves refer to them. Triangles are
 /// copied into a packed array and tested inline; other objects go through their virtual
 /// <see cref="GeometricObject.Intersect"/>. Unbounded objects (planes) are kept aside and tested
-/// against every ray.
+/// against every ray. Shadow-casting flags are read when the structure is built.
 /// </summary>
 internal sealed class PrimitiveTable
 {

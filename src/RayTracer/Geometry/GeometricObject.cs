@@ -9,7 +9,8 @@ public abstract class GeometricObject
     /// <summary>Virtual so compound objects can hand a material down to their parts.</summary>
     public virtual Material? Material { get; set; }
 
-    public bool CastsShadows { get; set; } = true;
+    /// <summary>Virtual so that parts of a shared nature (mesh triangles) can also consult it.</summary>
+    public virtual bool CastsShadows { get; set; } = true;
 
     /// <summary>
     /// Source of uniform samples in [0,1)² used by <see cref="Sample()"/>; area lights set it to their

@@ -177,6 +177,22 @@ public class AccelerationStructures_AgreeWithBruteForce
 
     [Theory]
     [MemberData(nameof(Kinds))]
+    public void ShadowRaysIgnoreMeshesThatCastNoShadows(string kind)
+    {
+        Mesh mesh = ThroughputReport.DisplacedSphere(500);
+        mesh.CastsShadows = false;
+        var objects = new List<GeometricObject>(mesh.CreateTriangles(false)) { new Sphere(new Point3D(0, 0, -5), 1) };
+        AccelerationStructure structure = Build(kind, objects);
+        var ray = new Ray(new Point3D(0, 0, 5), new Vector3D(0, 0, -1));
+        Assert.True(structure.IntersectNearest(ray, double.PositiveInfinity, out double t, out _) && t < 5);
+        Assert.False(structure.IntersectAny(ray, 8)); // only the mesh lies within 8
+        Assert.True(structure.IntersectAny(ray, 20)); // the sphere behind it does cast shadows
+        Assert.True(structure.ShadowHit(ray, out t));
+        Assert.Equal(9, t, 9);
+    }
+
+    [Theory]
+    [MemberData(nameof(Kinds))]
     public void EmptyAndDegenerateScenesAreHandled(string kind)
     {
         var ray = new Ray(new Point3D(0, 0, 5), new Vector3D(0, 0, -1));

@@ -58,9 +58,16 @@ public sealed class MeshTriangle : GeometricObject, ITriangle
         return TriangleSolver.Intersect(ray, v0, V1 - v0, V2 - v0, double.PositiveInfinity, out t, out _, out _);
     }
 
+    /// <summary>False when either this triangle or its mesh is set not to cast shadows.</summary>
+    public override bool CastsShadows
+    {
+        get => base.CastsShadows && Mesh.CastsShadows;
+        set => base.CastsShadows = value;
+    }
+
     public override bool ShadowHit(in Ray ray, out double tmin)
     {
-        if (!CastsShadows || !Mesh.CastsShadows)
+        if (!CastsShadows)
         {
             tmin = 0;
             return false;
