@@ -2,6 +2,7 @@ using BenchmarkDotNet.Configs;
 using BenchmarkDotNet.Jobs;
 using BenchmarkDotNet.Running;
 using BenchmarkDotNet.Toolchains.InProcess.Emit;
+using GMac.Benchmarks.Reporting;
 
 namespace GMac.Benchmarks;
 
@@ -9,6 +10,9 @@ internal static class Program
 {
     private static int Main(string[] args)
     {
+        if (args.Length > 0 && args[0] == "report")
+            return ReportCommand.Run(args[1..], Console.Out, Console.Error);
+
         // In-process: the benchmark host needs no generated project, so it runs on any installed runtime.
         var config = ManualConfig.Create(DefaultConfig.Instance)
             .AddJob(Job.Default.WithToolchain(InProcessEmitToolchain.Instance))

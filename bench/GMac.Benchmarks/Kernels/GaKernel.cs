@@ -1,0 +1,52 @@
+namespace GMac.Benchmarks.Kernels;
+
+/// <summary>
+/// Batch plumbing shared by the kernels. Each kernel loops over the batch itself so that its
+/// per-item methods can be inlined: one virtual call per batch, none per item.
+/// </summary>
+public abstract class GaKernel<TIn, TOut> : IGaKernel where TIn : struct where TOut : struct
+{
+    private TIn[] _inputs = [];
+    private readonly Dictionary<Variant, TOut[]> _outputs = [];
+
+    public abstract string MacroName { get; }
+    public abstract string Source { get; }
+    public abstract OperationCount HandOperations { get; }
+    public int Count => _inputs.Length;
+
+    public void Setup(int count, int seed)
+    {
+        ArgumentOutOfRangeException.ThrowIfNegativeOrZero(count);
+        var random = new Random(seed);
+        _inputs = new TIn[count];
+        for (var i = 0; i < count; i++) _inputs[i] = CreateInput(random);
+        foreach (var v in Enum.GetValues<Variant>()) _outputs[v] = new TOut[count];
+    }
+
+    public void Run(Variant variant)
+    {
+        var outputs = _outputs[variant];
+        switch (variant)
+        {
+            case Variant.Generated: RunGenerated(_inputs, outputs); break;
+            case Variant.Direct: RunDirect(_inputs, outputs); break;
+            case Variant.Hand: RunHand(_inputs, outputs); break;
+            default: throw new ArgumentOutOfRangeException(nameof(variant));
+        }
+    }
+
+    public IReadOnlyList<double> Output(Variant variant, int index) => Components(_outputs[variant][index]);
+
+    protected abstract TIn CreateInput(Random random);
+
+    protected abstract double[] Components(TOut value);
+
+    protected abstract void RunGenerated(TIn[] inputs, TOut[] outputs);
+
+    protected abstract void RunDirect(TIn[] inputs, TOut[] outputs);
+
+    protected abstract void RunHand(TIn[] inputs, TOut[] outputs);
+
+    /// <summary>Uniform in [−1, 1).</summary>
+    protected static double Signed(Random random) => random.NextDouble() * 2 - 1;
+}

@@ -1,0 +1,123 @@
+using System.Runtime.CompilerServices;
+using GMac.Benchmarks.Kernels.Values;
+using static GMac.Benchmarks.Kernels.DirectAlgebra;
+
+namespace GMac.Benchmarks.Kernels;
+
+/// <summary>(3.73), (3.76) the dual sphere ω = (p1 ^ p2 ^ p3 ^ p4) ⌋ I⁻¹ through four points.</summary>
+public sealed class SphereThroughPointsKernel : GaKernel<Vec3Quad, DualSphere>
+{
+    public override string MacroName => "SphereThroughPoints";
+    public override string Source => "thesis (3.73), (3.76)";
+
+    /// <summary>
+    /// Counted by hand: four ½|p|² (16 mul, 8 add), twelve differences to p1 (12 add), six 2×2 minors
+    /// (12 mul, 6 add), four 3×3 determinants (12 mul, 8 add), the e1^e2^e3^ni coefficient (4 mul, 3 add).
+    /// </summary>
+    public override OperationCount HandOperations => new(Additions: 37, Multiplications: 44, Divisions: 0, Calls: 0);
+
+    protected override Vec3Quad CreateInput(Random random) => new()
+    {
+        P1 = new(Signed(random), Signed(random), Signed(random)),
+        P2 = new(Signed(random), Signed(random), Signed(random)),
+        P3 = new(Signed(random), Signed(random), Signed(random)),
+        P4 = new(Signed(random), Signed(random), Signed(random)),
+    };
+
+    protected override double[] Components(DualSphere s) => [s.No, s.E1, s.E2, s.E3, s.Ni];
+
+    protected override void RunGenerated(Vec3Quad[] inputs, DualSphere[] outputs)
+    {
+        for (var i = 0; i < inputs.Length; i++) Generated(in inputs[i], out outputs[i]);
+    }
+
+    protected override void RunDirect(Vec3Quad[] inputs, DualSphere[] outputs)
+    {
+        for (var i = 0; i < inputs.Length; i++) outputs[i] = Direct(in inputs[i]);
+    }
+
+    protected override void RunHand(Vec3Quad[] inputs, DualSphere[] outputs)
+    {
+        for (var i = 0; i < inputs.Length; i++) Hand(in inputs[i], out outputs[i]);
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static void Generated(in Vec3Quad q, out DualSphere s)
+    {
+        #region GMac : SphereThroughPoints
+        //GMac.Bind("p1", "ConformalPoint3D", "q.P1");
+        //GMac.Bind("p2", "ConformalPoint3D", "q.P2");
+        //GMac.Bind("p3", "ConformalPoint3D", "q.P3");
+        //GMac.Bind("p4", "ConformalPoint3D", "q.P4");
+        //GMac.Bind("omega.no", "<s.No>");
+        //GMac.Bind("omega.e1", "<s.E1>");
+        //GMac.Bind("omega.e2", "<s.E2>");
+        //GMac.Bind("omega.e3", "<s.E3>");
+        //GMac.Bind("omega.ni", "<s.Ni>");
+        double tmp0 = q.P4.x - q.P1.x;
+        double tmp1 = q.P4.y - q.P1.y;
+        double tmp2 = q.P4.z - q.P1.z;
+        double tmp3 = q.P1.y * q.P1.y + q.P1.x * q.P1.x + q.P1.z * q.P1.z;
+        double tmp4 = 0.5 * (q.P4.y * q.P4.y + q.P4.z * q.P4.z + q.P4.x * q.P4.x - tmp3);
+        double tmp5 = q.P3.x - q.P1.x;
+        double tmp6 = q.P3.y - q.P1.y;
+        double tmp7 = q.P3.z - q.P1.z;
+        double tmp8 = 0.5 * (q.P3.x * q.P3.x + q.P3.y * q.P3.y + q.P3.z * q.P3.z - tmp3);
+        double tmp9 = tmp1 * tmp5 - tmp0 * tmp6;
+        double tmp10 = tmp2 * tmp5 - tmp0 * tmp7;
+        double tmp11 = tmp2 * tmp6 - tmp1 * tmp7;
+        double tmp12 = tmp4 * tmp5 - tmp0 * tmp8;
+        double tmp13 = tmp4 * tmp6 - tmp1 * tmp8;
+        double tmp14 = tmp4 * tmp7 - tmp2 * tmp8;
+        double tmp15 = q.P2.x - q.P1.x;
+        double tmp16 = q.P2.y - q.P1.y;
+        double tmp17 = q.P2.z - q.P1.z;
+        double tmp18 = 0.5 * (q.P2.x * q.P2.x + q.P2.y * q.P2.y + q.P2.z * q.P2.z - tmp3);
+        double tmp19 = tmp11 * tmp15 + tmp17 * tmp9 - tmp16 * tmp10;
+        double tmp20 = tmp13 * tmp15 + tmp18 * tmp9 - tmp12 * tmp16;
+        double tmp21 = tmp14 * tmp15 + tmp18 * tmp10 - tmp12 * tmp17;
+        double tmp22 = tmp11 * tmp18 + tmp14 * tmp16 - tmp13 * tmp17;
+        s.No = -tmp19;
+        s.E1 = -tmp22;
+        s.E2 = tmp21;
+        s.E3 = -tmp20;
+        s.Ni = 0.5 * tmp19 * tmp3 + tmp21 * q.P1.y - tmp20 * q.P1.z - tmp22 * q.P1.x;
+        #endregion
+    }
+
+    public static DualSphere Direct(in Vec3Quad q)
+    {
+        var sigma = Point(q.P1).Op(Point(q.P2)).Op(Point(q.P3)).Op(Point(q.P4));
+        var omega = sigma.Lcp(CgaIi);
+        return new DualSphere { No = omega["no"], E1 = omega["e1"], E2 = omega["e2"], E3 = omega["e3"], Ni = omega["ni"] };
+    }
+
+    /// <summary>
+    /// The coefficients of p1^p2^p3^p4 are the 4×4 minors of the rows (1, x, y, z, ½|p|²); subtracting
+    /// the first row turns the four with the no column into 3×3 determinants of differences, and the
+    /// fifth is their cofactor expansion along p1. The dual permutes them with signs.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static void Hand(in Vec3Quad q, out DualSphere s)
+    {
+        ref readonly var p1 = ref q.P1;
+        ref readonly var p2 = ref q.P2;
+        ref readonly var p3 = ref q.P3;
+        ref readonly var p4 = ref q.P4;
+        var n1 = 0.5 * (p1.x * p1.x + p1.y * p1.y + p1.z * p1.z);
+        double ax = p2.x - p1.x, ay = p2.y - p1.y, az = p2.z - p1.z, an = 0.5 * (p2.x * p2.x + p2.y * p2.y + p2.z * p2.z) - n1;
+        double bx = p3.x - p1.x, by = p3.y - p1.y, bz = p3.z - p1.z, bn = 0.5 * (p3.x * p3.x + p3.y * p3.y + p3.z * p3.z) - n1;
+        double cx = p4.x - p1.x, cy = p4.y - p1.y, cz = p4.z - p1.z, cn = 0.5 * (p4.x * p4.x + p4.y * p4.y + p4.z * p4.z) - n1;
+        double mxy = bx * cy - by * cx, mxz = bx * cz - bz * cx, myz = by * cz - bz * cy;
+        double mxn = bx * cn - bn * cx, myn = by * cn - bn * cy, mzn = bz * cn - bn * cz;
+        var xyz = ax * myz - ay * mxz + az * mxy;
+        var xyn = ax * myn - ay * mxn + an * mxy;
+        var xzn = ax * mzn - az * mxn + an * mxz;
+        var yzn = ay * mzn - az * myn + an * myz;
+        s.No = -xyz;
+        s.E1 = -yzn;
+        s.E2 = xzn;
+        s.E3 = -xyn;
+        s.Ni = n1 * xyz - p1.x * yzn + p1.y * xzn - p1.z * xyn;
+    }
+}

@@ -1,0 +1,101 @@
+using GMac.Benchmarks.Applications;
+using GMac.Benchmarks.Generation;
+using GMac.Benchmarks.Kernels;
+using GMac.Dsl;
+using GMac.Dsl.Generation;
+
+namespace GMac.Benchmarks.Reporting;
+
+/// <summary>
+/// <c>report [--quick]</c>: checks and times every kernel, counts operations, times generation, and
+/// writes <c>ga-apps.md</c> and <c>ga-apps.png</c>. Both files are written whole or not at all.
+/// </summary>
+public static class ReportCommand
+{
+    public const string MarkdownFile = "ga-apps.md";
+    public const string ChartFile = "ga-apps.png";
+
+    public static int Run(IReadOnlyList<string> args, TextWriter output, TextWriter error)
+    {
+        var options = ReportOptions.Parse(args, out var usage);
+        if (options is null)
+        {
+            error.WriteLine($"report: {usage}");
+            error.WriteLine(ReportOptions.Usage);
+            return 2;
+        }
+        try
+        {
+            Write(options, output);
+            return 0;
+        }
+        catch (Exception e) when (e is InvalidOperationException or IOException or UnauthorizedAccessException)
+        {
+            error.WriteLine($"report: {e.Message}");
+            return 1;
+        }
+    }
+
+    public static void Write(ReportOptions options, TextWriter log)
+    {
+        var project = DslProject.Load(options.DslDirectory);
+        if (project.HasErrors)
+            throw new InvalidOperationException($"the DSL folder '{options.DslDirectory}' has errors: {project.Diagnostics.First(d => d.IsError)}");
+        var counter = new GeneratedOperationCounter(new MacroCodeGenerator(project));
+
+        var kernels = KernelCatalog.CreateAll();
+        foreach (var k in kernels)
+        {
+            k.Setup(GaApplicationBenchmarks.BatchSize, GaApplicationBenchmarks.Seed);
+            KernelAgreement.Verify(k);
+        }
+        log.WriteLine($"report: the three variants of {kernels.Count} kernels agree");
+
+        IReadOnlyList<KernelTiming> timings;
+        if (options.Quick)
+        {
+            var timer = new StopwatchTimer(rounds: 3, TimeSpan.FromMilliseconds(20));
+            timings = kernels.Select(timer.Measure).ToArray();
+        }
+        else
+        {
+            timings = BenchmarkDotNetTimer.MeasureAll(Path.Combine(Path.GetTempPath(), "gmac-bench-artifacts"));
+        }
+
+        var rows = kernels.Zip(timings, (k, t) =>
+        {
+            try
+            {
+                return new KernelRow(k, t, counter.Count(k), null);
+            }
+            catch (InvalidOperationException e)
+            {
+                return new KernelRow(k, t, null, e.Message);
+            }
+        }).ToArray();
+
+        GenerationTimings? generation = null;
+        if (!options.SkipGeneration)
+        {
+            log.WriteLine("report: timing generation of every macro");
+            generation = new GenerationTimer(options.DslDirectory, warmRepeats: options.Quick ? 1 : 5).Measure();
+        }
+
+        var command = "dotnet run -c Release --project bench/GMac.Benchmarks -- report" + (options.Quick ? " --quick" : "");
+        var mode = options.Quick ? "quick: Stopwatch, best of 3 rounds of 20 ms" : "full: BenchmarkDotNet in process, 4 warm-ups, 10 iterations of 200 ms";
+        var markdown = MarkdownReport.Render(rows, generation, mode, command, ChartFile);
+        var png = BarChart.Render(timings);
+
+        Directory.CreateDirectory(options.OutputDirectory);
+        WriteAtomically(Path.Combine(options.OutputDirectory, ChartFile), png);
+        WriteAtomically(Path.Combine(options.OutputDirectory, MarkdownFile), System.Text.Encoding.UTF8.GetBytes(markdown));
+        log.WriteLine($"report: wrote {Path.Combine(options.OutputDirectory, MarkdownFile)} and {ChartFile}");
+    }
+
+    private static void WriteAtomically(string path, byte[] bytes)
+    {
+        var temp = path + ".tmp";
+        File.WriteAllBytes(temp, bytes);
+        File.Move(temp, path, overwrite: true);
+    }
+}
