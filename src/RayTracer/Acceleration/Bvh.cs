@@ -7,9 +7,10 @@ using RayTracer.Util;
 namespace RayTracer.Acceleration;
 
 /// <summary>
-/// Bounding volume hierarchy built with the binned surface area heuristic, stored as a flat array of
-/// nodes in depth-first order and traversed with a fixed stack on the call stack (no allocation).
-/// Children are visited near-first according to the sign of the ray direction on the split axis.
+/// Bounding volume hierarchy built top-down with the binned surface area heuristic (16 bins on each
+/// axis), then collapsed into four-wide nodes whose child boxes are tested together with vector
+/// instructions. Traversal uses a fixed stack on the call stack (no allocation), visits entered
+/// children nearest first and skips subtrees that start beyond the best hit so far.
 /// </summary>
 public sealed class Bvh : AccelerationStructure
 {
@@ -24,7 +25,7 @@ public sealed class Bvh : AccelerationStructure
     // Rounding slack on far slab distances (pbrt's 1 + 2γ₃) so no ray slips between adjacent boxes.
     private const double FarSlack = 1.0 + 6.0 * 1.1102230246251565e-16;
 
-    // Slack for the far distance of the vector slab test; see SlabRay.
+    // Slack for the far distance of the vector slab test; see WideRay.
     private static readonly Vector256<double> FarSlackVector = Vector256.Create(FarSlack);
 
     private readonly BvhNode[] _nodes;
