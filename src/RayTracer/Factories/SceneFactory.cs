@@ -22,6 +22,7 @@ public static class SceneFactory
         () => new GenericPrimitivesScene(),
         () => new CompoundObjectsScene(),
         () => new BinaryObjectScene(),
+        () => new ConstructiveSolidsScene(),
         () => new MeshesScene(),
         () => new PinholeZoomScene(),
         () => new OrthographicScene(),
