@@ -28,14 +28,15 @@ internal static partial class BindingPointReader
         var points = new List<BindingPoint>();
         var open = new Stack<(int Line, int Column, string? Macro)>();
 
-        foreach (var directive in root.DescendantTrivia()
-                     .Where(t => t.IsKind(SyntaxKind.RegionDirectiveTrivia) || t.IsKind(SyntaxKind.EndRegionDirectiveTrivia))
-                     .Select(t => (DirectiveTriviaSyntax)t.GetStructure()!))
+        // Roslyn parses an unmatched #endregion as a bad directive, so classify directives by their text.
+        foreach (var directive in root.DescendantTrivia().Where(t => t.IsDirective))
         {
             var position = tree.GetLineSpan(directive.Span).StartLinePosition;
             var line = position.Line;
             var column = position.Character + 1;
-            if (directive is RegionDirectiveTriviaSyntax)
+            var kind = DirectiveKind().Match(lines[line]);
+            if (!kind.Success) continue;
+            if (kind.Groups[1].Value == "region")
             {
                 var header = RegionHeader().Match(lines[line]);
                 string? macro = null;
@@ -216,6 +217,9 @@ internal static partial class BindingPointReader
 
     [GeneratedRegex(@"^\s*#\s*region\s+GMac\s*:\s*(?<name>.*?)\s*$")]
     private static partial Regex RegionHeader();
+
+    [GeneratedRegex(@"^\s*#\s*(region|endregion)\b")]
+    private static partial Regex DirectiveKind();
 
     [GeneratedRegex(@"^[A-Za-z_][A-Za-z0-9_]*$")]
     private static partial Regex Identifier();

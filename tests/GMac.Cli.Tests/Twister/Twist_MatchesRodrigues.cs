@@ -1,0 +1,53 @@
+using Twister;
+
+namespace GMac.Cli.Tests.Twister;
+
+/// <summary>
+/// The Twist built by the MSBuild step (its body generated from ApplyTwistToPoint3D) against an
+/// independent construction: Rodrigues' rotation about the line, then a slide along the axis.
+/// </summary>
+public sealed class Twist_MatchesRodrigues
+{
+    private static TwistablePoint Expected(TwistablePoint origin, TwistablePoint axis, double angle, double slide, TwistablePoint p)
+    {
+        var length = Math.Sqrt(axis.x * axis.x + axis.y * axis.y + axis.z * axis.z);
+        double kx = axis.x / length, ky = axis.y / length, kz = axis.z / length;
+        double vx = p.x - origin.x, vy = p.y - origin.y, vz = p.z - origin.z;
+        double c = Math.Cos(angle), s = Math.Sin(angle), dot = kx * vx + ky * vy + kz * vz;
+        var rx = vx * c + (ky * vz - kz * vy) * s + kx * dot * (1 - c);
+        var ry = vy * c + (kz * vx - kx * vz) * s + ky * dot * (1 - c);
+        var rz = vz * c + (kx * vy - ky * vx) * s + kz * dot * (1 - c);
+        return new TwistablePoint(rx + origin.x + slide * axis.x, ry + origin.y + slide * axis.y, rz + origin.z + slide * axis.z);
+    }
+
+    [Fact]
+    public void Random_twists_of_random_points()
+    {
+        var random = new Random(42);
+        double R() => random.NextDouble() * 4 - 2;
+        for (var i = 0; i < 50; i++)
+        {
+            var origin = new TwistablePoint(R(), R(), R());
+            var axis = new TwistablePoint(R(), R(), R());
+            var (angle, slide) = (R() * 3, R());
+            var p = new TwistablePoint(R(), R(), R());
+
+            var actual = new Twist(origin, axis, angle, slide).Apply(p);
+            var expected = Expected(origin, axis, angle, slide, p);
+
+            Assert.Equal(expected.x, actual.x, 1e-9);
+            Assert.Equal(expected.y, actual.y, 1e-9);
+            Assert.Equal(expected.z, actual.z, 1e-9);
+        }
+    }
+
+    [Fact]
+    public void Quarter_turn_about_z_through_a_point_then_slide()
+    {
+        var twist = new Twist(new TwistablePoint(1, 0, 0), new TwistablePoint(0, 0, 1), Math.PI / 2, 3);
+        var moved = twist.Apply(new TwistablePoint(2, 0, 5));
+        Assert.Equal(1, moved.x, 1e-12);
+        Assert.Equal(1, moved.y, 1e-12);
+        Assert.Equal(8, moved.z, 1e-12);
+    }
+}
