@@ -33,14 +33,26 @@ public sealed class BinaryObject : GeometricObject
         set => BaseObject.Material = value;
     }
 
-    public override bool Hit(in Ray ray, out double tmin, ShadingRecord sr) => Solve(ray, out tmin, sr);
+    public override bool Hit(in Ray ray, out double tmin, ShadingRecord sr)
+    {
+        // The search runs on a scratch record, so a miss leaves the caller's record untouched;
+        // the accepted crossing is then shaded once more into the caller's record.
+        if (!Solve(ray, out tmin, out Ray accepted))
+        {
+            return false;
+        }
 
-    public override bool Intersect(in Ray ray, out double t) => Solve(ray, out t, _scratch ??= new ShadingRecord(null));
+        return BaseObject.Hit(accepted, out _, sr);
+    }
+
+    public override bool Intersect(in Ray ray, out double t) => Solve(ray, out t, out _);
 
     public override BoundingBox GetBoundingBox() => BaseObject.GetBoundingBox();
 
-    private bool Solve(in Ray ray, out double tmin, ShadingRecord sr)
+    /// <summary>First crossing whose point passes the mask; <paramref name="accepted"/> is the query ray that found it.</summary>
+    private bool Solve(in Ray ray, out double tmin, out Ray accepted)
     {
+        ShadingRecord sr = _scratch ??= new ShadingRecord(null);
         double offset = 0;
         Ray current = ray;
         for (int i = 0; i < MaxSurfaceCrossings; i++)
@@ -54,6 +66,7 @@ public sealed class BinaryObject : GeometricObject
             if (Mask(sr))
             {
                 tmin = offset;
+                accepted = current;
                 return true;
             }
 
@@ -62,6 +75,7 @@ public sealed class BinaryObject : GeometricObject
         }
 
         tmin = 0;
+        accepted = default;
         return false;
     }
 }
