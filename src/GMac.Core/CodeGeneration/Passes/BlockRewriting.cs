@@ -53,6 +53,29 @@ internal static class BlockRewriting
             _ => ExprFactory.Normalize(node),
         });
 
+    /// <summary>
+    /// Replaces the nodes for which <paramref name="replace"/> answers (outermost first); untouched
+    /// subtrees keep their identity and only the parents of a replacement are renormalized.
+    /// </summary>
+    public static Expr ReplaceNodes(Expr node, Func<Expr, Expr?> replace)
+    {
+        if (replace(node) is { } replacement) return replacement;
+        if (node.IsLeaf) return node;
+        var children = node.Children;
+        Expr[]? rebuilt = null;
+        for (var i = 0; i < children.Count; i++)
+        {
+            var c = ReplaceNodes(children[i], replace);
+            if (rebuilt is null && !ReferenceEquals(c, children[i]))
+            {
+                rebuilt = new Expr[children.Count];
+                for (var j = 0; j < i; j++) rebuilt[j] = children[j];
+            }
+            if (rebuilt is not null) rebuilt[i] = c;
+        }
+        return rebuilt is null ? node : ExprFactory.Normalize(node.WithChildren(rebuilt));
+    }
+
     /// <summary>Applies a rewrite to every expression of every statement.</summary>
     public static CodeBlock MapExpressions(CodeBlock block, Func<Expr, Expr> map) =>
         block.WithStatements(block.Statements.Select(s =>

@@ -28,7 +28,7 @@ public sealed class CommonSubexpressionPass(Func<int, string> temporaryName) : I
         return block;
     }
 
-    private readonly Dictionary<Expr, Expr> _keys = new();
+    private readonly Dictionary<Expr, Expr> _keys = new(ReferenceEqualityComparer.Instance);
 
     /// <summary>The node with sums and products in a fixed order, so a·b and b·a share one key.</summary>
     private Expr Key(Expr e)
@@ -44,7 +44,7 @@ public sealed class CommonSubexpressionPass(Func<int, string> temporaryName) : I
     }
 
     /// <summary>The key shared by e and −e, and whether e is the negated one (a − b and b − a).</summary>
-    private readonly Dictionary<Expr, (Expr, bool)> _canonical = new();
+    private readonly Dictionary<Expr, (Expr, bool)> _canonical = new(ReferenceEqualityComparer.Instance);
 
     private (Expr Key, bool Negated) Canonical(Expr e)
     {
@@ -111,9 +111,8 @@ public sealed class CommonSubexpressionPass(Func<int, string> temporaryName) : I
     {
         var variable = ExprFactory.Variable(name);
         bool Matches(Expr node) => !node.IsLeaf && node is not NegateExpr && Canonical(node).Key.Equals(key);
-        Expr Replace(Expr root) => root.Rewrite(node =>
-            Matches(node) ? (Canonical(node).Negated ? ExprFactory.Negate(variable) : variable)
-            : node.IsLeaf ? node : ExprFactory.Normalize(node));
+        Expr Replace(Expr root) => BlockRewriting.ReplaceNodes(root, node =>
+            Matches(node) ? (Canonical(node).Negated ? ExprFactory.Negate(variable) : variable) : null);
 
         var result = new List<CodeStatement>();
         var inserted = false;
@@ -124,7 +123,8 @@ public sealed class CommonSubexpressionPass(Func<int, string> temporaryName) : I
                 result.Add(new AssignmentStatement(name, key, false));
                 inserted = true;
             }
-            result.Add(s.WithExpressions(s.Expressions.Select(Replace).ToArray()));
+            var exprs = s.Expressions.Select(Replace).ToArray();
+            result.Add(exprs.SequenceEqual(s.Expressions, ReferenceEqualityComparer.Instance) ? s : s.WithExpressions(exprs));
         }
         return block.WithStatements(result);
     }

@@ -21,14 +21,20 @@ public sealed class PairExtractionPass(Func<int, string> temporaryName) : IOptim
         taken.UnionWith(block.InputText.Keys);
         for (var iteration = 0; iteration < 10_000; iteration++)
         {
-            var (pair, isProduct) = FindBest(block);
-            if (pair is null) return block;
-            string name;
-            do name = temporaryName(_counter++); while (!taken.Add(name));
-            block = Extract(block, pair.Value, isProduct, name);
+            var chosen = FindBest(block);
+            if (chosen.Count == 0) return block;
+            foreach (var (pair, isProduct) in chosen)
+            {
+                string name;
+                do name = temporaryName(_counter++); while (!taken.Add(name));
+                block = Extract(block, pair, isProduct, name);
+            }
         }
         return block;
     }
+
+    /// <summary>Pairs extracted per count of the block: their items are disjoint, so extracting one leaves the others' counts intact.</summary>
+    private const int PairsPerRound = 16;
 
     /// <summary>Terms of a sum as (operand, negated); factors of a product as (factor, false).</summary>
     private static List<(Expr Item, bool Negated)> Items(Expr node) =>
@@ -54,7 +60,7 @@ public sealed class PairExtractionPass(Func<int, string> temporaryName) : IOptim
     /// <summary>Nodes with more items than this are not searched for pairs (the count grows quadratically).</summary>
     private const int MaxItems = 12;
 
-    private static (Pair? Pair, bool IsProduct) FindBest(CodeBlock block)
+    private static List<(Pair Pair, bool IsProduct)> FindBest(CodeBlock block)
     {
         var counts = new Dictionary<(Pair, bool), int>();
         var order = new List<(Pair, bool)>();
@@ -76,11 +82,21 @@ public sealed class PairExtractionPass(Func<int, string> temporaryName) : IOptim
                 else { counts[key] = 1; order.Add(key); }
             }
         }
-        (Pair, bool)? best = null;
-        var bestCount = 1;
-        foreach (var key in order)
-            if (counts[key] > bestCount) { best = key; bestCount = counts[key]; }
-        return best is { } b ? (b.Item1, b.Item2) : (null, false);
+        // Most shared first (stable: first seen first); then greedily those that share no item.
+        var ranked = order.Where(k => counts[k] >= 2).OrderByDescending(k => counts[k]).ToList();
+        var used = new HashSet<Expr>();
+        var chosen = new List<(Pair, bool)>();
+        foreach (var key in ranked)
+        {
+            var (pair, _) = key;
+            var second = pair.Second is NegateExpr n ? n.Operand : pair.Second;
+            if (used.Contains(pair.First) || used.Contains(second)) continue;
+            used.Add(pair.First);
+            used.Add(second);
+            chosen.Add(key);
+            if (chosen.Count == PairsPerRound) break;
+        }
+        return chosen;
     }
 
     private static CodeBlock Extract(CodeBlock block, Pair pair, bool isProduct, string name)
@@ -108,13 +124,14 @@ public sealed class PairExtractionPass(Func<int, string> temporaryName) : IOptim
         var inserted = false;
         foreach (var s in block.Statements)
         {
-            var exprs = s.Expressions.Select(e => e.Rewrite(n => Rewrite(n) ?? (n.IsLeaf ? n : ExprFactory.Normalize(n)))).ToArray();
-            if (!inserted && !exprs.SequenceEqual(s.Expressions))
+            var exprs = s.Expressions.Select(e => BlockRewriting.ReplaceNodes(e, Rewrite)).ToArray();
+            var changed = !exprs.SequenceEqual(s.Expressions, ReferenceEqualityComparer.Instance);
+            if (!inserted && changed)
             {
                 result.Add(new AssignmentStatement(name, value, false));
                 inserted = true;
             }
-            result.Add(s.WithExpressions(exprs));
+            result.Add(changed ? s.WithExpressions(exprs) : s);
         }
         return block.WithStatements(result);
     }
