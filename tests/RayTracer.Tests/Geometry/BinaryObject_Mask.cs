@@ -20,4 +20,18 @@ public class BinaryObject_Mask
         Assert.True(Math.Abs(t - (5 + Math.Sqrt(1 - 0.05))) < 1e-9);
         Assert.True(new Ray(new Point3D(-5, 0.1, 0.2), new Vector3D(1, 0, 0)).At(t).x > 0);
     }
+
+    [Fact]
+    public void AFullyMaskedRayMissesAndLeavesTheRecordUntouched()
+    {
+        // Keep only the cap y > 0.9: a ray along the x axis crosses the sphere twice, both masked out.
+        var masked = new BinaryObject(new Sphere(Point3D.Origin, 1), sr => sr.LocalHitPoint.y > 0.9);
+        var sr = new ShadingRecord(null) { Normal = new Normal3D(7, 7, 7) };
+        Assert.False(masked.Hit(new Ray(new Point3D(-5, 0, 0), new Vector3D(1, 0, 0)), out _, sr));
+        Assert.Equal(new Normal3D(7, 7, 7), sr.Normal);
+        Assert.False(masked.Intersect(new Ray(new Point3D(-5, 0, 0), new Vector3D(1, 0, 0)), out _));
+        Assert.True(masked.Hit(new Ray(new Point3D(0, 5, 0), new Vector3D(0, -1, 0)), out double t, sr));
+        Assert.Equal(4, t, 12);
+        Assert.Equal(new Normal3D(0, 1, 0), sr.Normal);
+    }
 }
