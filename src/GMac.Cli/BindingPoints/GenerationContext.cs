@@ -15,11 +15,15 @@ internal sealed class GenerationContext
     public GenerationContext(DslProject project, string? cacheDirectory)
     {
         Project = project;
+        CacheDirectory = cacheDirectory;
         Cache = new SimplificationCache(cacheDirectory);
         Generator = new MacroCodeGenerator(project, new CachingCasAdapter(new RuleBasedCas(), Cache));
     }
 
     public DslProject Project { get; }
+
+    /// <summary>Where caches persist between runs; null keeps them in memory.</summary>
+    public string? CacheDirectory { get; }
     public SimplificationCache Cache { get; }
     public MacroCodeGenerator Generator { get; }
 

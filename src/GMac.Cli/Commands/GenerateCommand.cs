@@ -39,10 +39,16 @@ internal sealed class GenerateCommand : ICommand
         var missesBefore = context.Cache.Misses;
         var (files, missing) = SourceScanner.Find(paths);
         foreach (var m in missing) error.WriteLine(m);
-        int scanned = 0, regions = 0, changed = 0, failed = missing.Count, outOfDate = 0;
+        int scanned = 0, regions = 0, changed = 0, failed = missing.Count, outOfDate = 0, skipped = 0;
+        var index = GeneratedFileIndex.Open(context.CacheDirectory, context, stats);
         foreach (var path in files)
         {
             scanned++;
+            if (TryReadBytes(path) is { } bytes && index.IsCurrent(path, bytes))
+            {
+                skipped++;
+                continue;
+            }
             var generation = GenerateFile(path, context, stats, error);
             if (generation is null)
             {
@@ -57,7 +63,11 @@ internal sealed class GenerateCommand : ICommand
                 continue;
             }
             regions += generation.Regions.Count;
-            if (!generation.Changed) continue;
+            if (!generation.Changed)
+            {
+                index.Record(path, generation.File.Source.Encode(generation.File.Source.Text));
+                continue;
+            }
             if (check)
             {
                 outOfDate++;
@@ -73,12 +83,26 @@ internal sealed class GenerateCommand : ICommand
                 continue;
             }
             changed++;
+            index.Record(path, generation.File.Source.Encode(generation.NewText));
         }
+        index.Save();
         var hits = context.Cache.Hits - hitsBefore;
         var misses = context.Cache.Misses - missesBefore;
         output.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"gmac generate: {scanned} file(s) scanned, {regions} region(s) generated, {(check ? $"{outOfDate} file(s) out of date" : $"{changed} file(s) changed")}, {failed} file(s) with errors, cache {hits} hit(s) {misses} miss(es), {watch.Elapsed.TotalMilliseconds:F0} ms"));
+            $"gmac generate: {scanned} file(s) scanned, {regions} region(s) generated, {skipped} file(s) unchanged since the last run, {(check ? $"{outOfDate} file(s) out of date" : $"{changed} file(s) changed")}, {failed} file(s) with errors, cache {hits} hit(s) {misses} miss(es), {watch.Elapsed.TotalMilliseconds:F0} ms"));
         return failed > 0 || outOfDate > 0 ? ExitCodes.Diagnostics : ExitCodes.Success;
+    }
+
+    private static byte[]? TryReadBytes(string path)
+    {
+        try
+        {
+            return File.ReadAllBytes(path);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            return null;
+        }
     }
 
     /// <summary>Reads and generates one file; null (with a diagnostic) when it cannot be read.</summary>
