@@ -73,20 +73,49 @@ public sealed class SimplificationCache
         if (!_memory.TryAdd(key, result) || FilePath is null) return;
         var text = result.ToString();
         var line = $"{key}\t{text}\t{Checksum(key, text)}\n";
+        bool flushNow;
         lock (_diskLock)
         {
+            if (_pending.Length == 0) EnsureFlushAtExit();
+            _pending.Append(line);
+            flushNow = ++_pendingCount >= FlushThreshold;
+        }
+        if (flushNow) Flush();
+    }
+
+    /// <summary>Answers appended since the last flush; written in one append so misses cost no file I/O each.</summary>
+    private readonly StringBuilder _pending = new();
+    private int _pendingCount;
+    private bool _exitHookRegistered;
+    private const int FlushThreshold = 512;
+
+    private void EnsureFlushAtExit()
+    {
+        if (_exitHookRegistered) return;
+        _exitHookRegistered = true;
+        AppDomain.CurrentDomain.ProcessExit += (_, _) => Flush();
+    }
+
+    /// <summary>Appends the pending answers to the cache file (also done past a threshold and at process exit).</summary>
+    public void Flush()
+    {
+        lock (_diskLock)
+        {
+            if (_pending.Length == 0 || FilePath is null) return;
+            var bytes = Encoding.UTF8.GetBytes(_pending.ToString());
+            _pending.Clear();
+            _pendingCount = 0;
             try
             {
                 Directory.CreateDirectory(Path.GetDirectoryName(FilePath)!);
                 using var stream = new FileStream(FilePath, FileMode.OpenOrCreate, FileAccess.ReadWrite, FileShare.ReadWrite | FileShare.Delete);
-                // A line cut short by an earlier crash must not swallow this one.
+                // A line cut short by an earlier crash must not swallow these.
                 if (stream.Length > 0)
                 {
                     stream.Seek(-1, SeekOrigin.End);
                     if (stream.ReadByte() != '\n') stream.WriteByte((byte)'\n');
                 }
                 stream.Seek(0, SeekOrigin.End);
-                var bytes = Encoding.UTF8.GetBytes(line);
                 stream.Write(bytes);
                 stream.Flush();
             }

@@ -31,6 +31,7 @@ public sealed class SimplificationCache_Persistence : IDisposable
     {
         var first = new CachingCasAdapter(new RuleBasedCas(), new SimplificationCache(_directory));
         Assert.Same(X, first.Simplify(Root, NonNegative));
+        first.Cache.Flush();
         Assert.True(File.Exists(first.Cache.FilePath));
 
         var second = new CachingCasAdapter(new CountingCas(), new SimplificationCache(_directory));
@@ -46,8 +47,10 @@ public sealed class SimplificationCache_Persistence : IDisposable
         var cache = new SimplificationCache(_directory);
         var cas = new CachingCasAdapter(new RuleBasedCas(), cache);
         cas.Simplify(Root, NonNegative);
+        cache.Flush();
         File.Delete(cache.FilePath!);
         Assert.Same(Scalar.Abs(X), cas.Simplify(Root, Assumptions.None));
+        cache.Flush();
         Assert.True(File.Exists(cache.FilePath));
 
         Directory.Delete(_directory, recursive: true);
@@ -63,6 +66,7 @@ public sealed class SimplificationCache_Persistence : IDisposable
         cache.Add("k1", X + Scalar.One);
         cache.Add("k2", Scalar.Sin(X));
         cache.Add("k3", Scalar.Pow(X, 3));
+        cache.Flush();
         var lines = File.ReadAllLines(cache.FilePath!);
         Assert.Equal(3, lines.Length);
         // k1's answer is altered, k3's line is cut short, and garbage is appended.
@@ -78,8 +82,22 @@ public sealed class SimplificationCache_Persistence : IDisposable
 
         // Appending after the torn line still gives a readable entry.
         reader.Add("k4", Scalar.Cos(X));
+        reader.Flush();
         Assert.True(new SimplificationCache(_directory).TryGet("k4", out var k4));
         Assert.Same(Scalar.Cos(X), k4);
+    }
+
+    [Fact]
+    public void Answers_reach_the_file_in_one_append_when_flushed()
+    {
+        var cache = new SimplificationCache(_directory);
+        cache.Add("a", X);
+        cache.Add("b", Scalar.Sin(X));
+        Assert.False(File.Exists(cache.FilePath)); // nothing written per answer
+        cache.Flush();
+        Assert.Equal(2, File.ReadAllLines(cache.FilePath!).Length);
+        cache.Flush(); // nothing pending: nothing appended
+        Assert.Equal(2, File.ReadAllLines(cache.FilePath!).Length);
     }
 
     [Fact]
