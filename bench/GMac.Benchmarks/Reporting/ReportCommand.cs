@@ -82,7 +82,7 @@ public static class ReportCommand
         }
 
         var command = "dotnet run -c Release --project bench/GMac.Benchmarks -- report" + (options.Quick ? " --quick" : "");
-        var mode = options.Quick ? "quick: Stopwatch, best of 3 rounds of 20 ms" : "full: BenchmarkDotNet in process, 4 warm-ups, 10 iterations of 200 ms";
+        var mode = options.Quick ? "quick: Stopwatch, best of 3 rounds of 20 ms" : "full: BenchmarkDotNet in process, 4 warm-ups, 10 iterations of 200 ms, median";
         var markdown = MarkdownReport.Render(rows, generation, mode, command, ChartFile);
         var png = BarChart.Render(timings);
 
