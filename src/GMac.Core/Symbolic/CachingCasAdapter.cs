@@ -20,12 +20,35 @@ public sealed class CachingCasAdapter(ICasAdapter inner, SimplificationCache cac
         ArgumentNullException.ThrowIfNull(assumptions);
         // Constants and variables are already as simple as they get.
         if (expression.IsConstant) return expression;
+        // Equal expressions are one object, so a repeated question is answered without printing
+        // the expression into a text key (which costs as much as the expression is long).
+        var answers = _byIdentity.GetValue(expression, _ => new Dictionary<string, Scalar>(StringComparer.Ordinal));
+        lock (answers)
+        {
+            if (answers.TryGetValue(assumptions.Key, out var known))
+            {
+                Interlocked.Increment(ref _identityHits);
+                return known;
+            }
+        }
         var key = KeyOf(expression, assumptions);
-        if (Cache.TryGet(key, out var cached)) return cached;
-        var result = Inner.Simplify(expression, assumptions);
-        Cache.Add(key, result);
+        if (!Cache.TryGet(key, out var result))
+        {
+            result = Inner.Simplify(expression, assumptions);
+            Cache.Add(key, result);
+        }
+        lock (answers) answers[assumptions.Key] = result;
         return result;
     }
+
+    private readonly System.Runtime.CompilerServices.ConditionalWeakTable<Scalar, Dictionary<string, Scalar>> _byIdentity = new();
+    private long _identityHits;
+
+    /// <summary>Questions answered from this process's identity table, before any text key was made.</summary>
+    public long IdentityHits => Interlocked.Read(ref _identityHits);
+
+    /// <summary>All answers that did not need the simplifier: identity hits plus the text cache's hits.</summary>
+    public long TotalHits => IdentityHits + Cache.Hits;
 
     public string KeyOf(Scalar expression, Assumptions assumptions) =>
         $"{Inner.Name} | {assumptions.Key} | {expression}";
