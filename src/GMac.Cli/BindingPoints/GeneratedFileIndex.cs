@@ -28,7 +28,7 @@ internal sealed class GeneratedFileIndex
     public static GeneratedFileIndex Open(string? cacheDirectory, GenerationContext context, bool stats)
     {
         var key = new StringBuilder();
-        key.Append(typeof(GeneratedFileIndex).Assembly.ManifestModule.ModuleVersionId).Append('|').Append(stats).Append('|');
+        key.Append(GenerationContext.ToolVersion).Append('|').Append(stats).Append('|');
         foreach (var tree in context.Project.SyntaxTrees.OrderBy(t => t.FilePath, StringComparer.Ordinal))
             key.Append(tree.FilePath).Append('\0').Append(tree.Text).Append('\0');
         var index = new GeneratedFileIndex(cacheDirectory is null ? null : Path.Combine(cacheDirectory, FileName), Hash(Encoding.UTF8.GetBytes(key.ToString())));

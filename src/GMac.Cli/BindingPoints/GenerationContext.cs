@@ -16,7 +16,9 @@ internal sealed class GenerationContext
     {
         Project = project;
         CacheDirectory = cacheDirectory;
-        Cache = new SimplificationCache(cacheDirectory);
+        // Answers are only valid for the simplifier that gave them, so each build of GMac.Core
+        // gets its own sub-folder (a changed rule set must not be served stale results).
+        Cache = new SimplificationCache(cacheDirectory is null ? null : Path.Combine(cacheDirectory, $"core-{ToolVersion[..12]}"));
         Generator = new MacroCodeGenerator(project, new CachingCasAdapter(new RuleBasedCas(), Cache));
     }
 
@@ -26,6 +28,10 @@ internal sealed class GenerationContext
     public string? CacheDirectory { get; }
     public SimplificationCache Cache { get; }
     public MacroCodeGenerator Generator { get; }
+
+    /// <summary>Identifies the generator's code (deterministic builds: it changes only when the code does).</summary>
+    public static string ToolVersion { get; } = string.Concat(
+        new[] { typeof(RuleBasedCas), typeof(DslProject), typeof(GenerationContext) }.Select(t => t.Assembly.ManifestModule.ModuleVersionId.ToString("N")));
 
     /// <summary>The cache folder used when none is given: <c>.gmac-cache/</c> inside the DSL folder (gitignored).</summary>
     public static string DefaultCacheDirectory(string dslDirectory) => Path.Combine(Path.GetFullPath(dslDirectory), DefaultCacheFolder);
