@@ -16,7 +16,7 @@ internal static partial class BindingPointReader
     public const string LinePrefix = "//GMac.";
 
     /// <summary>Cheap test that lets the tool skip parsing files that cannot hold a binding point.</summary>
-    public static bool MayContainBindingPoints(string text) => text.Contains("GMac", StringComparison.Ordinal);
+    public static bool MayContainBindingPoints(string text) => text.Contains("GMac", StringComparison.Ordinal) && RegionMention().IsMatch(text);
 
     public static BindingPointFile Read(SourceText source)
     {
@@ -220,6 +220,9 @@ internal static partial class BindingPointReader
 
     [GeneratedRegex(@"^\s*#\s*(region|endregion)\b")]
     private static partial Regex DirectiveKind();
+
+    [GeneratedRegex(@"#\s*region\s+GMac\b")]
+    private static partial Regex RegionMention();
 
     [GeneratedRegex(@"^[A-Za-z_][A-Za-z0-9_]*$")]
     private static partial Regex Identifier();
