@@ -23,7 +23,8 @@ internal static partial class BindingPointReader
         var path = source.Path;
         var tree = CSharpSyntaxTree.ParseText(source.Text, path: path);
         var root = tree.GetRoot();
-        var lines = SplitLines(source.Text);
+        var text = tree.GetText();
+        var lines = SplitLines(text);
         var diagnostics = new List<BindingDiagnostic>();
         var points = new List<BindingPoint>();
         var open = new Stack<(int Line, int Column, string? Macro)>();
@@ -70,7 +71,7 @@ internal static partial class BindingPointReader
         foreach (var region in open)
             diagnostics.Add(new(path, region.Line + 1, region.Column, "GMAC0402", "#region without a matching #endregion"));
 
-        var bodies = points.Select(p => (Start: tree.GetText().Lines[p.RegionLine].End, End: tree.GetText().Lines[p.EndRegionLine].Start)).ToList();
+        var bodies = points.Select(p => (Start: text.Lines[p.RegionLine].End, End: text.Lines[p.EndRegionLine].Start)).ToList();
         var identifiers = root.DescendantTokens()
             .Where(t => t.IsKind(SyntaxKind.IdentifierToken) && !bodies.Any(b => t.SpanStart >= b.Start && t.SpanStart < b.End))
             .Select(t => t.ValueText)
@@ -79,22 +80,12 @@ internal static partial class BindingPointReader
         return new BindingPointFile(source, lines, points, diagnostics, identifiers);
     }
 
-    /// <summary>Lines with their own terminators, so joining them gives the text back byte for byte.</summary>
-    public static List<string> SplitLines(string text)
-    {
-        var lines = new List<string>();
-        var start = 0;
-        for (var i = 0; i < text.Length; i++)
-        {
-            if (text[i] == '\n' || (text[i] == '\r' && (i + 1 >= text.Length || text[i + 1] != '\n')))
-            {
-                lines.Add(text[start..(i + 1)]);
-                start = i + 1;
-            }
-        }
-        lines.Add(text[start..]);
-        return lines;
-    }
+    /// <summary>
+    /// Lines with their own terminators, split as Roslyn splits them (so its line numbers index
+    /// this list); joining them gives the text back byte for byte.
+    /// </summary>
+    private static List<string> SplitLines(Microsoft.CodeAnalysis.Text.SourceText text) =>
+        text.Lines.Select(l => text.ToString(l.SpanIncludingLineBreak)).ToList();
 
     private static BindingPoint ReadPoint(string path, IReadOnlyList<string> lines, string macro, int regionLine, int endLine, List<BindingDiagnostic> diagnostics)
     {
