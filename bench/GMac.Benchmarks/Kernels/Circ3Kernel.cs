@@ -35,19 +35,15 @@ public sealed class Circ3Kernel : GaKernel<Vec3, Vec3>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static void Generated(in Vec3 p, out Vec3 v)
     {
-        // One binding point for v.e1 and v.e2 together fails to print (GMAC0409, an extracted common
-        // factor whose definition is lost), so the shared factor is generated in each of two regions.
         #region GMac : Circ3
         //GMac.Bind("p", "Vector3D", "p");
         //GMac.Bind("v.e1", "<v.x>");
-        //GMac.Bind("v.e3", "<v.z>");
-        v.x = 4.0 * p.x * (p.x * p.x + p.y * p.y - 1.0);
-        v.z = 2.0 * p.z;
-        #endregion
-        #region GMac : Circ3
-        //GMac.Bind("p", "Vector3D", "p");
         //GMac.Bind("v.e2", "<v.y>");
-        v.y = 4.0 * p.y * (p.x * p.x + p.y * p.y - 1.0);
+        //GMac.Bind("v.e3", "<v.z>");
+        double tmp0 = 4.0 * (p.y * p.y + p.x * p.x - 1.0);
+        v.x = p.x * tmp0;
+        v.y = p.y * tmp0;
+        v.z = 2.0 * p.z;
         #endregion
     }
 
