@@ -39,15 +39,23 @@ public static class CodeGenerator
         return new CodeGenerationResult(best.Block, best.Stats, best.Form, alternative.Block is null ? null : alternative.Stats);
     }
 
-    /// <summary>The caller's simplifier (side relations, assumptions) with sums cancelled against their inverses.</summary>
+    /// <summary>
+    /// The caller's simplifier (side relations, assumptions), with sums cancelled against their
+    /// inverses and half-angle products of sines and cosines reduced to full angles.
+    /// </summary>
     private static Func<Scalar, Scalar> EffectiveSimplifier(Func<Scalar, Scalar>? simplify)
     {
         simplify ??= s => s;
         return s =>
         {
             s = simplify(s);
-            var cancelled = InverseCancellation.Cancel(s);
-            return ReferenceEquals(cancelled, s) ? s : simplify(cancelled);
+            for (var round = 0; round < 4; round++)
+            {
+                var reduced = HalfAngleReduction.Apply(InverseCancellation.CancelDeep(s));
+                if (ReferenceEquals(reduced, s)) break;
+                s = simplify(reduced);
+            }
+            return s;
         };
     }
 

@@ -14,6 +14,7 @@ public sealed class Optimizer
         var cse = new CommonSubexpressionPass();
         var dead = new DeadCodePass();
         var pairs = new PairExtractionPass();
+        var factor = new SumFactoringPass();
 
         block = dead.Run(copy.Run(fold.Run(block)));
         block = fold.Run(strength.Run(block));
@@ -24,6 +25,7 @@ public sealed class Optimizer
             block = copy.Run(fold.Run(block));
             block = dead.Run(cse.Run(block));
             block = dead.Run(cse.Run(pairs.Run(block)));
+            block = fold.Run(factor.Run(block));
             if ((block.Statistics(), block.Statements.Count) == before) break;
         }
         block = strength.Run(block); // CSE may expose repeated denominators

@@ -12,6 +12,48 @@ public static class InverseCancellation
 {
     private const int MaxDivisionSteps = 20_000;
 
+    /// <summary>Cancels inside every function argument first (e.g. within a denominator), then at the top.</summary>
+    public static Scalar CancelDeep(Scalar e) => Cancel(MapArguments(e, CancelDeep));
+
+    /// <summary>The scalar with each function atom rebuilt over transformed arguments.</summary>
+    public static Scalar MapArguments(Scalar e, Func<Scalar, Scalar> map)
+    {
+        var atoms = e.Atoms().Where(a => a.Arguments.Count > 0).ToArray();
+        if (atoms.Length == 0) return e;
+        var replaced = new Dictionary<Atom, Scalar>();
+        foreach (var atom in atoms)
+        {
+            var args = atom.Arguments.Select(map).ToArray();
+            if (args.Select((a, i) => ReferenceEquals(a, atom.Arguments[i])).All(same => same)) continue;
+            replaced[atom] = Rebuild(atom.Kind, args);
+        }
+        if (replaced.Count == 0) return e;
+        var sum = new ScalarSumBuilder();
+        foreach (var term in e.Terms)
+        {
+            var product = Scalar.Constant(term.Coefficient);
+            foreach (var f in term.Monomial.Factors)
+                product *= Scalar.IntegerPower(replaced.TryGetValue(f.Atom, out var r) ? r : f.Atom.AsScalar(), f.Power);
+            sum.Add(product);
+        }
+        return sum.ToScalar();
+    }
+
+    private static Scalar Rebuild(AtomKind kind, Scalar[] a) => kind switch
+    {
+        AtomKind.Sin => Scalar.Sin(a[0]),
+        AtomKind.Cos => Scalar.Cos(a[0]),
+        AtomKind.Tan => Scalar.Tan(a[0]),
+        AtomKind.Sqrt => Scalar.Sqrt(a[0]),
+        AtomKind.Exp => Scalar.Exp(a[0]),
+        AtomKind.Log => Scalar.Log(a[0]),
+        AtomKind.Abs => Scalar.Abs(a[0]),
+        AtomKind.Atan2 => Scalar.Atan2(a[0], a[1]),
+        AtomKind.Pow => Scalar.Pow(a[0], a[1]),
+        AtomKind.Inverse => Scalar.Reciprocal(a[0]),
+        _ => throw new InvalidOperationException($"Atom kind {kind} has no arguments to rebuild."),
+    };
+
     public static Scalar Cancel(Scalar e)
     {
         for (var round = 0; round < 16; round++)

@@ -128,6 +128,15 @@ public class OptimizerPasses_Behaviour
     }
 
     [Fact]
+    public void SumFactoring_TakesASharedFactorOutOfTheTerms()
+    {
+        var block = Block(Out("o", Sum(Product(A, B), Product(A, C), Negate(Product(A, D)), B)));
+        var result = new SumFactoringPass().Run(block);
+        Assert.Equal(1, result.Statistics().Multiplications);
+        AssertSameOutputs(block, result);
+    }
+
+    [Fact]
     public void Optimizer_KeepsValues_OnRandomBlocks()
     {
         var random = new Random(81);

@@ -1,0 +1,56 @@
+using GMac.Core.Numerics;
+
+namespace GMac.Core.Symbolic;
+
+/// <summary>
+/// Rewrites products of sines and cosines of a half angle u = w/2 into functions of w:
+/// sin u cos u = sin(w)/2, cos²u = (1 + cos w)/2, sin²u = (1 − cos w)/2. Versors are built from
+/// half angles (cos(φ/2) − sin(φ/2) B), and a sandwich product V X Ṽ is quadratic in them; after
+/// this rewrite it is linear in cos φ and sin φ, the form of Rodrigues' rotation formula.
+/// </summary>
+public static class HalfAngleReduction
+{
+    public static Scalar Apply(Scalar value)
+    {
+        if (!value.Atoms().Any(IsHalfAngleTrig)) return value;
+        var sum = new ScalarSumBuilder();
+        foreach (var term in value.Terms) sum.Add(Reduce(term));
+        return sum.ToScalar();
+    }
+
+    private static bool IsHalfAngleTrig(Atom a) => a.Kind is AtomKind.Sin or AtomKind.Cos && IsHalf(a.Arguments[0]);
+
+    /// <summary>True when every coefficient of the argument has denominator 2 exactly (so 2u has integer ones).</summary>
+    private static bool IsHalf(Scalar u) => u.Terms.Count > 0 && u.Terms.All(t => t.Coefficient.Denominator == 2);
+
+    private static Scalar Reduce(Term term)
+    {
+        // powers of sin(u) and cos(u) per half-angle argument u; everything else stays
+        var powers = new Dictionary<Scalar, (int Sin, int Cos)>();
+        var rest = Scalar.Constant(term.Coefficient);
+        foreach (var f in term.Monomial.Factors)
+        {
+            if (f.Power > 0 && IsHalfAngleTrig(f.Atom))
+            {
+                var u = f.Atom.Arguments[0];
+                var (s, c) = powers.GetValueOrDefault(u);
+                powers[u] = f.Atom.Kind == AtomKind.Sin ? (s + f.Power, c) : (s, c + f.Power);
+            }
+            else rest *= Scalar.IntegerPower(f.Atom.AsScalar(), f.Power);
+        }
+        var half = Scalar.Constant(new Rational(1, 2));
+        foreach (var (u, (sinPower, cosPower)) in powers)
+        {
+            var w = u + u;
+            var (s, c) = (sinPower, cosPower);
+            var factor = Scalar.One;
+            for (; s >= 1 && c >= 1; s--, c--) factor *= Scalar.Sin(w) * half;
+            for (; c >= 2; c -= 2) factor *= (Scalar.One + Scalar.Cos(w)) * half;
+            for (; s >= 2; s -= 2) factor *= (Scalar.One - Scalar.Cos(w)) * half;
+            if (s == 1) factor *= Scalar.Sin(u);
+            if (c == 1) factor *= Scalar.Cos(u);
+            rest *= factor;
+        }
+        return rest;
+    }
+}

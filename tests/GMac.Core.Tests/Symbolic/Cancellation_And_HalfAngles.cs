@@ -1,0 +1,43 @@
+using GMac.Core.Symbolic;
+
+namespace GMac.Core.Tests.Symbolic;
+
+public class Cancellation_And_HalfAngles
+{
+    private static readonly Scalar X = Scalar.Variable("x"), Y = Scalar.Variable("y"), T = Scalar.Variable("t");
+
+    [Fact]
+    public void ExactMultiplesOfASum_CancelAgainstItsInverse()
+    {
+        var q = X * X + Y * Y;
+        Assert.Same(Scalar.One, InverseCancellation.Cancel(X * X / q + Y * Y / q));
+        Assert.Same(X, InverseCancellation.Cancel((X * X * X + X * Y * Y) / q));
+        // a remainder stays: nothing is cancelled
+        var partial = (X * X + Y) / q;
+        Assert.Same(partial, InverseCancellation.Cancel(partial));
+    }
+
+    [Fact]
+    public void CancellationReachesInsideDenominators()
+    {
+        var q = X * X + Y * Y;
+        var inner = q * T / q - T + 2; // = 2 once q/q cancels
+        var value = Scalar.One / inner;
+        Assert.Same(Scalar.Constant(new Core.Numerics.Rational(1, 2)), InverseCancellation.CancelDeep(value));
+    }
+
+    [Fact]
+    public void HalfAngleProducts_BecomeFullAngleFunctions_WithTheSameValue()
+    {
+        var u = T / 2;
+        var value = Scalar.Cos(u) * Scalar.Cos(u) - Scalar.Sin(u) * Scalar.Sin(u) + 2 * Scalar.Sin(u) * Scalar.Cos(u) * X;
+        var reduced = HalfAngleReduction.Apply(value);
+        Assert.Same(Scalar.Cos(T) + Scalar.Sin(T) * X, reduced);
+        var random = new Random(90);
+        for (var i = 0; i < 10; i++)
+        {
+            var v = new Dictionary<string, double> { ["t"] = random.NextDouble() * 6 - 3, ["x"] = random.NextDouble() };
+            Assert.Equal(value.Evaluate(v), reduced.Evaluate(v), 12);
+        }
+    }
+}
