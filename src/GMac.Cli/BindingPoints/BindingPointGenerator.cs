@@ -55,7 +55,17 @@ internal static class BindingPointGenerator
         }
         if (diagnostics.Count > before) return new GeneratedRegion(point, null, null);
 
-        var outcome = context.Generator.Generate(point.MacroName, point.Specs, point.RegionLineNumber);
+        GenerationOutcome outcome;
+        try
+        {
+            outcome = context.Generator.Generate(point.MacroName, point.Specs, point.RegionLineNumber);
+        }
+        catch (Exception e) when (e is not OutOfMemoryException)
+        {
+            // A defect of the generator must not take the other files down: report it here.
+            diagnostics.Add(new(file.Path, point.RegionLineNumber, 1, "GMAC0409", $"internal error while generating '{point.MacroName}': {e.GetType().Name}: {e.Message}"));
+            return new GeneratedRegion(point, null, null);
+        }
         foreach (var e in outcome.Errors)
             diagnostics.Add(new(file.Path, e.Line, e.Column, e.Code, e.Message));
         if (!outcome.Succeeded) return new GeneratedRegion(point, outcome, null);

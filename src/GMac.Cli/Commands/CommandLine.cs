@@ -29,7 +29,16 @@ internal static class CommandLine
             output.WriteLine($"usage: {command.Usage}");
             return ExitCodes.Success;
         }
-        return command.Run(args.Skip(1).ToList(), output, error);
+        try
+        {
+            return command.Run(args.Skip(1).ToList(), output, error);
+        }
+        catch (Exception e) when (e is not OutOfMemoryException)
+        {
+            // Files are only ever replaced whole, so stopping here leaves no source half-written.
+            error.WriteLine($"gmac {command.Name}: internal error: {e.GetType().Name}: {e.Message}");
+            return ExitCodes.Diagnostics;
+        }
     }
 
     private static void PrintHelp(TextWriter writer)

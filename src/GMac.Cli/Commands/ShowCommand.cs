@@ -50,7 +50,9 @@ internal sealed class ShowCommand : ICommand
         var context = DslLoader.Load(options.Dsl!, options.Cache, error);
         if (context is null) return ExitCodes.Diagnostics;
         var macro = options.Positional[0];
-        if (specs.Count == 0 || specs.All(s => s is AssumptionSpec)) specs.InsertRange(0, context.Generator.DefaultBindings(macro));
+        // Default bindings get line 0 so their errors are not blamed on a --bind option.
+        if (specs.Count == 0 || specs.All(s => s is AssumptionSpec))
+            specs.InsertRange(0, context.Generator.DefaultBindings(macro).Select(d => d with { Line = 0 }));
         var outcome = context.Generator.Generate(macro, specs, 0);
         if (!outcome.Succeeded)
         {

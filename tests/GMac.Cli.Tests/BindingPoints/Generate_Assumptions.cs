@@ -3,6 +3,7 @@ using GMac.Cli.Tests.Support;
 namespace GMac.Cli.Tests.BindingPoints;
 
 /// <summary><c>//GMac.AssumeMin</c> / <c>AssumeMax</c> in both argument forms: accepted, verified, and checked against the bindings.</summary>
+[Collection(SharedDslCollection.Name)]
 public sealed class Generate_Assumptions : IDisposable
 {
     private readonly TempFolder _temp = new();

@@ -6,6 +6,7 @@ namespace GMac.Cli.Tests.BindingPoints;
 /// Bad binding points: each gives a diagnostic at the right line, a non-zero exit, and leaves
 /// the file byte-identical (even its other, valid regions are not rewritten).
 /// </summary>
+[Collection(SharedDslCollection.Name)]
 public sealed class Generate_Faults : IDisposable
 {
     private readonly TempFolder _temp = new();

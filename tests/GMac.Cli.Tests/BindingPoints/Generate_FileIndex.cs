@@ -4,6 +4,7 @@ using GMac.Cli.Tests.Support;
 namespace GMac.Cli.Tests.BindingPoints;
 
 /// <summary>With a cache folder, files left up to date are skipped next time, and any edit brings them back.</summary>
+[Collection(SharedDslCollection.Name)]
 public sealed class Generate_FileIndex : IDisposable
 {
     private readonly TempFolder _temp = new();

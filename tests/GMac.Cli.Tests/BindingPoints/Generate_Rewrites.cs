@@ -7,6 +7,7 @@ using GMac.Dsl;
 namespace GMac.Cli.Tests.BindingPoints;
 
 /// <summary><c>gmac generate</c> on copies of C# files: what it writes, and that a second run writes nothing.</summary>
+[Collection(SharedDslCollection.Name)]
 public sealed class Generate_Rewrites : IDisposable
 {
     private readonly TempFolder _temp = new();

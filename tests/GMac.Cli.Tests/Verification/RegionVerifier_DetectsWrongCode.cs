@@ -6,6 +6,7 @@ using GMac.Dsl.Generation;
 namespace GMac.Cli.Tests.Verification;
 
 /// <summary>The verifier is not a rubber stamp: code that differs from the macro fails, code that compiles badly is reported.</summary>
+[Collection(SharedDslCollection.Name)]
 public sealed class RegionVerifier_DetectsWrongCode
 {
     private static GenerationOutcome NormalOutcome()

@@ -7,6 +7,7 @@ namespace GMac.Cli.Tests.Verification;
 /// <c>gmac verify</c> on every binding point of the repository: the generated code, compiled in
 /// memory, agrees with the numeric engine on random inputs.
 /// </summary>
+[Collection(SharedDslCollection.Name)]
 public sealed class Verify_RepositoryBindingPoints
 {
     [Theory]
