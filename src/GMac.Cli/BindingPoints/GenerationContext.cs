@@ -19,10 +19,14 @@ internal sealed class GenerationContext
         // Answers are only valid for the simplifier that gave them, so each build of GMac.Core
         // gets its own sub-folder (a changed rule set must not be served stale results).
         Cache = new SimplificationCache(cacheDirectory is null ? null : Path.Combine(cacheDirectory, $"core-{ToolVersion[..12]}"));
-        Generator = new MacroCodeGenerator(project, new CachingCasAdapter(new RuleBasedCas(), Cache));
+        Cas = new CachingCasAdapter(new RuleBasedCas(), Cache);
+        Generator = new MacroCodeGenerator(project, Cas);
     }
 
     public DslProject Project { get; }
+
+    /// <summary>The caching simplifier behind the generator (its hits include answers found by identity).</summary>
+    public CachingCasAdapter Cas { get; }
 
     /// <summary>Where caches persist between runs; null keeps them in memory.</summary>
     public string? CacheDirectory { get; }

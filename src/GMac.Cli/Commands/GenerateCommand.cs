@@ -35,7 +35,7 @@ internal sealed class GenerateCommand : ICommand
     public static int Execute(GenerationContext context, IReadOnlyList<string> paths, bool check, bool stats, TextWriter output, TextWriter error, Stopwatch? watch = null)
     {
         watch ??= Stopwatch.StartNew();
-        var hitsBefore = context.Cache.Hits;
+        var hitsBefore = context.Cas.TotalHits;
         var missesBefore = context.Cache.Misses;
         var (files, missing) = SourceScanner.Find(paths);
         foreach (var m in missing) error.WriteLine(m);
@@ -86,7 +86,8 @@ internal sealed class GenerateCommand : ICommand
             index.Record(path, generation.File.Source.Encode(generation.NewText));
         }
         index.Save();
-        var hits = context.Cache.Hits - hitsBefore;
+        context.Cache.Flush();
+        var hits = context.Cas.TotalHits - hitsBefore;
         var misses = context.Cache.Misses - missesBefore;
         output.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"gmac generate: {scanned} file(s) scanned, {regions} region(s) generated, {skipped} file(s) unchanged since the last run, {(check ? $"{outOfDate} file(s) out of date" : $"{changed} file(s) changed")}, {failed} file(s) with errors, cache {hits} hit(s) {misses} miss(es), {watch.Elapsed.TotalMilliseconds:F0} ms"));

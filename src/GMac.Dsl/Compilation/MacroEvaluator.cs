@@ -33,7 +33,8 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
         public bool Joined { get; set; }
     }
 
-    private EvaluationObserver<T>? _observer;
+    // Per thread, so one evaluator can serve concurrent generations.
+    private readonly ThreadLocal<EvaluationObserver<T>?> _observer = new();
 
     public CoreFrames Frames { get; } = frames;
 
@@ -41,19 +42,19 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
     public IReadOnlyDictionary<VariableSymbol, Multivector<T>> Evaluate(MacroSymbol macro,
         IReadOnlyDictionary<VariableSymbol, Multivector<T>> inputs) => Evaluate(macro, inputs, 0);
 
-    /// <summary>Evaluates with an observer (code generation); not reentrant.</summary>
+    /// <summary>Evaluates with an observer (code generation).</summary>
     public IReadOnlyDictionary<VariableSymbol, Multivector<T>> Evaluate(MacroSymbol macro,
         IReadOnlyDictionary<VariableSymbol, Multivector<T>> inputs, EvaluationObserver<T>? observer)
     {
-        var previous = _observer;
-        _observer = observer;
+        var previous = _observer.Value;
+        _observer.Value = observer;
         try
         {
             return Evaluate(macro, inputs, 0);
         }
         finally
         {
-            _observer = previous;
+            _observer.Value = previous;
         }
     }
 
@@ -81,7 +82,7 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
         int count, int depth)
     {
         var env = new Dictionary<VariableSymbol, Value>();
-        var state = new RunState(_observer);
+        var state = new RunState(_observer.Value);
         foreach (var input in macro.Inputs)
         {
             if (!inputs.TryGetValue(input, out var value))
