@@ -78,29 +78,24 @@ public sealed class RotorInterpolateKernel : GaKernel<RotorPair, Rotor3>
         //GMac.Bind("r.e2^e3", "<r.x>");
         //GMac.Bind("r.e3^e1", "<r.y>");
         //GMac.Bind("r.e1^e2", "<r.z>");
-        double tmp0 = 1.0 / (p.R1.w * p.R1.w + p.R1.x * p.R1.x + p.R1.y * p.R1.y + p.R1.z * p.R1.z);
-        double tmp1 = p.R1.w * tmp0;
-        double tmp2 = -(p.R1.z * tmp0);
-        double tmp3 = p.R1.y * tmp0;
-        double tmp4 = -(p.R1.x * tmp0);
-        double tmp5 = tmp1 * p.R2.z + tmp2 * p.R2.w + tmp3 * p.R2.x + tmp4 * p.R2.y;
-        double tmp6 = tmp3 * p.R2.w + tmp4 * p.R2.z - tmp1 * p.R2.y - tmp2 * p.R2.x;
-        double tmp7 = tmp1 * p.R2.x + tmp4 * p.R2.w - tmp2 * p.R2.y - tmp3 * p.R2.z;
-        double tmp8 = Math.Sqrt(tmp5 * tmp5 + tmp6 * tmp6 + tmp7 * tmp7);
-        double tmp9 = p.Alpha * Math.Atan2(tmp8 / Math.Abs(tmp1 * p.R2.w + tmp3 * p.R2.y - tmp2 * p.R2.z - tmp4 * p.R2.x), 1.0) / tmp8;
+        double tmp0 = p.R1.w * p.R2.z + p.R1.y * p.R2.x - p.R1.x * p.R2.y - p.R1.z * p.R2.w;
+        double tmp1 = p.R1.y * p.R2.w + p.R1.z * p.R2.x - p.R1.w * p.R2.y - p.R1.x * p.R2.z;
+        double tmp2 = p.R1.w * p.R2.x + p.R1.z * p.R2.y - p.R1.x * p.R2.w - p.R1.y * p.R2.z;
+        double tmp3 = Math.Sqrt(tmp0 * tmp0 + tmp1 * tmp1 + tmp2 * tmp2);
+        double tmp4 = p.Alpha * Math.Atan2(tmp3 / Math.Abs(p.R1.w * p.R2.w + p.R1.x * p.R2.x + p.R1.y * p.R2.y + p.R1.z * p.R2.z), 1.0) / tmp3;
+        double tmp5 = tmp0 * tmp4;
+        double tmp6 = tmp1 * tmp4;
+        double tmp7 = tmp2 * tmp4;
+        double tmp8 = Math.Sqrt(-(-(tmp5 * tmp5) - tmp6 * tmp6 - tmp7 * tmp7));
+        double tmp9 = Math.Sin(tmp8) / tmp8;
         double tmp10 = tmp5 * tmp9;
         double tmp11 = tmp6 * tmp9;
         double tmp12 = tmp7 * tmp9;
-        double tmp13 = Math.Sqrt(-(-(tmp10 * tmp10) - tmp11 * tmp11 - tmp12 * tmp12));
-        double tmp14 = Math.Sin(tmp13) / tmp13;
-        double tmp15 = tmp10 * tmp14;
-        double tmp16 = tmp11 * tmp14;
-        double tmp17 = tmp12 * tmp14;
-        double tmp18 = Math.Cos(tmp13);
-        r.w = tmp16 * p.R1.y + tmp18 * p.R1.w - tmp15 * p.R1.z - tmp17 * p.R1.x;
-        r.x = tmp15 * p.R1.y + tmp16 * p.R1.z + tmp17 * p.R1.w + tmp18 * p.R1.x;
-        r.y = tmp17 * p.R1.z + tmp18 * p.R1.y - tmp15 * p.R1.x - tmp16 * p.R1.w;
-        r.z = tmp15 * p.R1.w + tmp18 * p.R1.z - tmp16 * p.R1.x - tmp17 * p.R1.y;
+        double tmp13 = Math.Cos(tmp8);
+        r.w = tmp11 * p.R1.y + tmp13 * p.R1.w - tmp10 * p.R1.z - tmp12 * p.R1.x;
+        r.x = tmp10 * p.R1.y + tmp11 * p.R1.z + tmp12 * p.R1.w + tmp13 * p.R1.x;
+        r.y = tmp12 * p.R1.z + tmp13 * p.R1.y - tmp10 * p.R1.x - tmp11 * p.R1.w;
+        r.z = tmp10 * p.R1.w + tmp13 * p.R1.z - tmp11 * p.R1.x - tmp12 * p.R1.y;
         #endregion
     }
 
