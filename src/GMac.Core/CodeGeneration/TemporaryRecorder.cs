@@ -72,22 +72,9 @@ public sealed class TemporaryRecorder
             var expanded = _simplify(Expand(argument));
             if (expanded.Terms.Count >= argument.Terms.Count) continue;
             var replacement = atom.Kind == AtomKind.Inverse ? Scalar.Reciprocal(expanded) : Scalar.Sqrt(expanded);
-            value = ReplaceAtom(value, atom, replacement);
+            value = InverseCancellation.ReplaceAtoms(value, new Dictionary<Atom, Scalar> { [atom] = replacement });
         }
         return value;
-    }
-
-    private static Scalar ReplaceAtom(Scalar value, Atom atom, Scalar replacement)
-    {
-        var sum = Scalar.Zero;
-        foreach (var term in value.Terms)
-        {
-            var product = Scalar.Constant(term.Coefficient);
-            foreach (var f in term.Monomial.Factors)
-                product *= Scalar.IntegerPower(ReferenceEquals(f.Atom, atom) ? replacement : f.Atom.AsScalar(), f.Power);
-            sum += product;
-        }
-        return sum;
     }
 
     /// <summary>A constant, or a constant multiple of one variable: naming it would save nothing.</summary>

@@ -27,13 +27,18 @@ public static class InverseCancellation
             if (args.Select((a, i) => ReferenceEquals(a, atom.Arguments[i])).All(same => same)) continue;
             replaced[atom] = Rebuild(atom.Kind, args);
         }
-        if (replaced.Count == 0) return e;
+        return replaced.Count == 0 ? e : ReplaceAtoms(e, replaced);
+    }
+
+    /// <summary>The scalar with the given atoms replaced by values (powers kept).</summary>
+    public static Scalar ReplaceAtoms(Scalar e, IReadOnlyDictionary<Atom, Scalar> replacements)
+    {
         var sum = new ScalarSumBuilder();
         foreach (var term in e.Terms)
         {
             var product = Scalar.Constant(term.Coefficient);
             foreach (var f in term.Monomial.Factors)
-                product *= Scalar.IntegerPower(replaced.TryGetValue(f.Atom, out var r) ? r : f.Atom.AsScalar(), f.Power);
+                product *= Scalar.IntegerPower(replacements.TryGetValue(f.Atom, out var r) ? r : f.Atom.AsScalar(), f.Power);
             sum.Add(product);
         }
         return sum.ToScalar();
