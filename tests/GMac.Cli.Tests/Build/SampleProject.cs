@@ -1,0 +1,63 @@
+using GMac.Cli.Tests.Support;
+
+namespace GMac.Cli.Tests.Build;
+
+/// <summary>
+/// A small project in a temporary folder that imports the repository's build/GMac.targets, with
+/// one C# file holding a binding point and a two-file DSL: the frame, and the macro it uses.
+/// </summary>
+internal sealed class SampleProject : IDisposable
+{
+    private readonly TempFolder _temp = new();
+
+    public SampleProject(string kernelsText)
+    {
+        var targets = Path.Combine(SharedDsl.RepositoryRoot, "build", "GMac.targets");
+        // Empty Directory.Build files stop MSBuild from importing any found above the temp folder.
+        _temp.Write("Directory.Build.props", "<Project />\n");
+        _temp.Write("Directory.Build.targets", "<Project />\n");
+        ProjectFile = _temp.Write("Sample.csproj", $"""
+            <Project Sdk="Microsoft.NET.Sdk">
+              <PropertyGroup>
+                <TargetFramework>net10.0</TargetFramework>
+                <Nullable>enable</Nullable>
+                <TreatWarningsAsErrors>true</TreatWarningsAsErrors>
+                <GMacDslDirectory>$(MSBuildThisFileDirectory)dsl</GMacDslDirectory>
+              </PropertyGroup>
+              <Import Project="{targets}" />
+            </Project>
+            """);
+        _temp.Write(Path.Combine("dsl", "frame.gmac"), """
+            define frame e3d as
+                basis: {e1, e2, e3}
+                Euclidean
+            end frame
+
+            define subspace e3d.vectors as basis {e1, e2, e3} end subspace
+            define multivector class e3d.Vector as vectors end multivector class
+            """);
+        MacroFile = _temp.Write(Path.Combine("dsl", "sum.gmac"), """
+            define macro Sum as
+                inputs: { u : e3d.Vector; v : e3d.Vector }
+                outputs: { w : e3d.Vector }
+                performs:
+                    w = u + v;
+            end macro
+            """);
+        KernelsFile = _temp.Write("Kernels.cs", kernelsText);
+    }
+
+    public string ProjectFile { get; }
+
+    /// <summary>The DSL file that defines the macro <c>Sum</c>.</summary>
+    public string MacroFile { get; }
+
+    public string KernelsFile { get; }
+
+    /// <summary>The file the MSBuild step touches after each successful generation.</summary>
+    public string StampFile => Path.Combine(_temp.Path, "obj", DotnetBuild.Configuration, "net10.0", "gmac-generate.stamp");
+
+    public (int Exit, string Output) Build(bool restore = false) => DotnetBuild.Run(ProjectFile, restore);
+
+    public void Dispose() => _temp.Dispose();
+}
