@@ -13,7 +13,7 @@ internal static class Program
         if (args.Length > 0 && args[0] == "report")
             return ReportCommand.Run(args[1..], Console.Out, Console.Error);
 
-        // In-process: the benchmark host needs no generated project, so it runs on any installed runtime.
+        // In process, as the report does: no host project is generated and rebuilt per benchmark.
         var config = ManualConfig.Create(DefaultConfig.Instance)
             .AddJob(Job.Default.WithToolchain(InProcessEmitToolchain.Instance))
             .WithOptions(ConfigOptions.DisableOptimizationsValidator);

@@ -6,7 +6,10 @@ using BenchmarkDotNet.Toolchains.InProcess.Emit;
 
 namespace GMac.Benchmarks.Applications;
 
-/// <summary>The full timing path: BenchmarkDotNet, in process (0.14 predates .NET 10, so it cannot build a host project for it).</summary>
+/// <summary>
+/// The full timing path: BenchmarkDotNet, in process. A separate host process per benchmark would
+/// rebuild this project (and regenerate its binding points) 45 times for one report.
+/// </summary>
 public static class BenchmarkDotNetTimer
 {
     public static IReadOnlyList<KernelTiming> MeasureAll(string artifactsDirectory)

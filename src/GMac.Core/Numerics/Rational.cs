@@ -116,10 +116,18 @@ public readonly struct Rational : IEquatable<Rational>, IComparable<Rational>
     {
         if (IsInteger) return (double)_numerator;
         var value = (double)_numerator / (double)Denominator;
-        if (double.IsFinite(value) && value != 0) return value;
-        // Huge numerator and denominator: scale down before dividing.
-        var shift = (int)Math.Max(0, Math.Max(_numerator.GetBitLength(), Denominator.GetBitLength()) - 1000);
-        return (double)(_numerator >> shift) / (double)(Denominator >> shift);
+        if (double.IsNormal(value)) return value;
+        // A part beyond the range of a double, or a subnormal result: take an integer quotient of
+        // 66 significant bits (plus a sticky bit for a non-zero remainder) and scale it by 2^-shift.
+        var numerator = BigInteger.Abs(_numerator);
+        var denominator = Denominator;
+        var shift = 66 - (numerator.GetBitLength() - denominator.GetBitLength());
+        var quotient = shift >= 0
+            ? BigInteger.DivRem(numerator << (int)shift, denominator, out var remainder)
+            : BigInteger.DivRem(numerator, denominator << (int)-shift, out remainder);
+        if (!remainder.IsZero) quotient |= BigInteger.One;
+        var magnitude = shift > 2000 ? 0.0 : shift < -2000 ? double.PositiveInfinity : Math.ScaleB((double)quotient, (int)-shift);
+        return Sign < 0 ? -magnitude : magnitude;
     }
 
     /// <summary>The exact value of a finite double (every double is a dyadic rational).</summary>
@@ -141,7 +149,7 @@ public readonly struct Rational : IEquatable<Rational>, IComparable<Rational>
         return negative ? -result : result;
     }
 
-    /// <summary>Parses "3", "-2/7", "1.25" or "2.5e-3" exactly.</summary>
+    /// <summary>Parses "3", "-2/7", "1.25" or "2.5e-3" exactly (decimal exponents up to ±<see cref="MaxDecimalExponent"/>).</summary>
     public static Rational Parse(string text)
     {
         if (TryParse(text, out var value)) return value;
@@ -160,11 +168,12 @@ public readonly struct Rational : IEquatable<Rational>, IComparable<Rational>
             value = n / d;
             return true;
         }
-        var exponent = 0;
+        long exponent = 0;
         var e = text.IndexOfAny(['e', 'E']);
         if (e >= 0)
         {
-            if (!int.TryParse(text[(e + 1)..], NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out exponent)) return false;
+            if (!int.TryParse(text[(e + 1)..], NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out var written)) return false;
+            exponent = written;
             text = text[..e];
         }
         var dot = text.IndexOf('.');
@@ -173,13 +182,21 @@ public readonly struct Rational : IEquatable<Rational>, IComparable<Rational>
             exponent -= text.Length - dot - 1;
             text = text.Remove(dot, 1);
         }
+        // 10^exponent is built exactly, so an exponent like 1e999999999 would take unbounded time and memory.
+        if (Math.Abs(exponent) > MaxDecimalExponent) return false;
         if (text.Length == 0 || text is "-" or "+") return false;
         if (!BigInteger.TryParse(text, NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out var digits)) return false;
         value = exponent >= 0
-            ? new Rational(digits * BigInteger.Pow(10, exponent), BigInteger.One)
-            : new Rational(digits, BigInteger.Pow(10, -exponent));
+            ? new Rational(digits * BigInteger.Pow(10, (int)exponent), BigInteger.One)
+            : new Rational(digits, BigInteger.Pow(10, (int)-exponent));
         return true;
     }
+
+    /// <summary>
+    /// The largest power of ten a decimal literal may carry (after moving its decimal point): far past
+    /// the range of a double (about 1e±308), yet cheap to build exactly.
+    /// </summary>
+    public const int MaxDecimalExponent = 1000;
 
     public bool Equals(Rational other) => _numerator == other._numerator && _denominatorMinusOne == other._denominatorMinusOne;
     public override bool Equals(object? obj) => obj is Rational r && Equals(r);

@@ -21,7 +21,7 @@ public class CodeGenerator_Twist
         var ni = Multivector<Scalar>.Basis(Cga, "ni");
         var no = Multivector<Scalar>.Basis(Cga, "no");
         var one = Multivector<Scalar>.FromScalar(Cga, 1);
-        var half = Scalar.Constant(new Numerics.Rational(1, 2));
+        var half = Scalar.Constant(new GMac.Core.Numerics.Rational(1, 2));
         var i3 = Multivector<Scalar>.Basis(Cga, "e1^e2^e3");
         var assumptions = Assumptions.None.WithRelations(SideRelations.Trigonometric);
         var cas = new RuleBasedCas();

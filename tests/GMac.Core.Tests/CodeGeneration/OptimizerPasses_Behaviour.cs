@@ -1,36 +1,12 @@
 using GMac.Core.CodeGeneration;
 using GMac.Core.CodeGeneration.Passes;
 using static GMac.Core.CodeGeneration.ExprFactory;
+using static GMac.Core.Tests.CodeGeneration.PassTestBlocks;
 
 namespace GMac.Core.Tests.CodeGeneration;
 
 public class OptimizerPasses_Behaviour
 {
-    private static readonly Expr A = Variable("a"), B = Variable("b"), C = Variable("c"), D = Variable("d");
-
-    private static CodeBlock Block(params CodeStatement[] statements) =>
-        new(statements,
-            new[] { "a", "b", "c", "d" }.ToDictionary(k => k, k => k, StringComparer.Ordinal),
-            statements.OfType<AssignmentStatement>().Where(s => s.IsOutput).ToDictionary(s => s.Target, s => s.Target, StringComparer.Ordinal));
-
-    private static AssignmentStatement Temp(string name, Expr value) => new(name, value, false);
-    private static AssignmentStatement Out(string name, Expr value) => new(name, value, true);
-
-    /// <summary>Every pass must keep the outputs' values: checked on random inputs.</summary>
-    private static void AssertSameOutputs(CodeBlock before, CodeBlock after)
-    {
-        var random = new Random(80);
-        for (var i = 0; i < 20; i++)
-        {
-            var inputs = new[] { "a", "b", "c", "d" }.ToDictionary(k => k, _ => random.NextDouble() * 4 + 0.5, StringComparer.Ordinal);
-            var expected = before.Evaluate(inputs);
-            var actual = after.Evaluate(inputs);
-            Assert.Equal(expected.Keys.Order(), actual.Keys.Order());
-            foreach (var (k, v) in expected)
-                Assert.True(Math.Abs(v - actual[k]) <= 1e-11 * Math.Max(1, Math.Abs(v)), $"{k}: {v} before, {actual[k]} after");
-        }
-    }
-
     [Fact]
     public void ConstantFolding_FoldsAndPropagates()
     {

@@ -34,7 +34,7 @@ public class Scalar_NumericAgreement
         {
             var (symbolic, direct) = trees.Next(depth: 3);
             // x0 := x1 * x2 + 1/2
-            var substituted = symbolic.Substitute("x0", x1 * x2 + Scalar.Constant(new Numerics.Rational(1, 2)));
+            var substituted = symbolic.Substitute("x0", x1 * x2 + Scalar.Constant(new GMac.Core.Numerics.Rational(1, 2)));
             Assert.DoesNotContain("x0", substituted.Variables);
             var point = trees.Point();
             var moved = new[] { point[1] * point[2] + 0.5, point[1], point[2] };

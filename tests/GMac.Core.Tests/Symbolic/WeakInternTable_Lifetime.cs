@@ -18,16 +18,21 @@ public class WeakInternTable_Lifetime
     [Fact]
     public void Unreferenced_entries_are_swept()
     {
+        const int garbage = 10_000;
         var table = new WeakInternTable<string>(StringComparer.Ordinal);
-        AddGarbage(table, 10_000);
+        AddGarbage(table, garbage);
         GC.Collect();
         GC.WaitForPendingFinalizers();
         GC.Collect();
+        // The table sweeps when it reaches twice its live size at the last sweep, so at most
+        // 2 × garbage entries; adding that many live ones must pass a sweep, which drops every
+        // dead entry. From then on only live entries are added: the count is exactly theirs.
         var kept = new List<string>();
-        for (var i = 0; i < 10_000; i++) kept.Add(table.GetOrAdd($"kept{i}"));
-        Assert.True(table.Count < 20_000, $"{table.Count} entries");
+        for (var i = 0; i < 2 * garbage; i++) kept.Add(table.GetOrAdd($"kept{i}"));
+        Assert.Equal(kept.Count, table.Count);
         // The survivors are still found.
         for (var i = 0; i < kept.Count; i++) Assert.Same(kept[i], table.GetOrAdd($"kept{i}"));
+        Assert.Equal(kept.Count, table.Count);
     }
 
     [MethodImpl(MethodImplOptions.NoInlining)]
