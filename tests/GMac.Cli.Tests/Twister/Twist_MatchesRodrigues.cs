@@ -1,13 +1,26 @@
+using GMac.Cli.Tests.Support;
 using Twister;
 
 namespace GMac.Cli.Tests.Twister;
 
 /// <summary>
-/// The Twist built by the MSBuild step (its body generated from ApplyTwistToPoint3D) against an
-/// independent construction: Rodrigues' rotation about the line, then a slide along the axis.
+/// Twister's Twist, whose body is generated from ApplyTwistToPoint3D, against an independent
+/// construction: Rodrigues' rotation about the line, then a slide along the axis. The body under
+/// test is the committed one, so one test first checks that it is what gmac generates today.
 /// </summary>
+[Collection(SharedDslCollection.Name)]
 public sealed class Twist_MatchesRodrigues
 {
+    [Fact]
+    public void The_committed_twist_is_what_gmac_generates_from_the_library()
+    {
+        var twist = Path.Combine(SharedDsl.RepositoryRoot, "src", "Twister", "Twist.cs");
+        Assert.Contains("#region GMac : ApplyTwistToPoint3D", File.ReadAllText(twist));
+        var (exit, output, error) = Tool.Generate([twist], check: true);
+        Assert.True(exit == 0, output + error);
+        Assert.Contains("1 region(s)", output);
+    }
+
     private static TwistablePoint Expected(TwistablePoint origin, TwistablePoint axis, double angle, double slide, TwistablePoint p)
     {
         var length = Math.Sqrt(axis.x * axis.x + axis.y * axis.y + axis.z * axis.z);
