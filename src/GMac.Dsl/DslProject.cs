@@ -1,5 +1,6 @@
 using System.Diagnostics;
 using GMac.Dsl.Diagnostics;
+using GMac.Dsl.Files;
 using GMac.Dsl.Semantics;
 using GMac.Dsl.Syntax;
 
@@ -36,9 +37,14 @@ public sealed class DslProject
             bag.ReportCannotRead(SourceSpan.None(directory), $"DSL folder '{directory}' does not exist");
             return FromSources(files, bag.Items);
         }
-        var paths = Directory.GetFiles(directory, "*.gmac", SearchOption.AllDirectories);
-        Array.Sort(paths, StringComparer.Ordinal);
-        if (paths.Length == 0) bag.ReportCannotRead(SourceSpan.None(directory), $"no *.gmac files in '{directory}'");
+        var listing = SourceTree.List(directory, "*.gmac");
+        foreach (var skipped in listing.Skipped)
+        {
+            if (skipped.IsError) bag.ReportCannotRead(SourceSpan.None(skipped.Path), skipped.Reason);
+            else bag.ReportSkippedFile(SourceSpan.None(skipped.Path), skipped.Reason);
+        }
+        var paths = listing.Files;
+        if (paths.Count == 0) bag.ReportCannotRead(SourceSpan.None(directory), $"no *.gmac files in '{directory}'");
         foreach (var path in paths)
         {
             try

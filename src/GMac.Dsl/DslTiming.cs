@@ -1,4 +1,5 @@
 using System.Diagnostics;
+using GMac.Dsl.Files;
 
 namespace GMac.Dsl;
 
@@ -10,8 +11,7 @@ public static class DslTiming
 {
     public static TimeSpan MeasureWarm(string directory, int repetitions)
     {
-        var sources = Directory.GetFiles(directory, "*.gmac", SearchOption.AllDirectories)
-            .Order(StringComparer.Ordinal)
+        var sources = SourceTree.List(directory, "*.gmac").Files
             .Select(p => (p, File.ReadAllText(p)))
             .ToList();
         DslProject.FromSources(sources); // warm-up: JIT and static tables

@@ -24,11 +24,14 @@ internal sealed class GeneratedFileIndex
         _key = key;
     }
 
-    /// <summary>An index for one DSL and one set of options; memory-only when <paramref name="cacheDirectory"/> is null.</summary>
-    public static GeneratedFileIndex Open(string? cacheDirectory, GenerationContext context, bool stats)
+    /// <summary>
+    /// An index for one DSL and one set of options; memory-only when <paramref name="cacheDirectory"/> is null.
+    /// <paramref name="stats"/> is null for a check, which accepts regions with or without statistics.
+    /// </summary>
+    public static GeneratedFileIndex Open(string? cacheDirectory, GenerationContext context, bool? stats)
     {
         var key = new StringBuilder();
-        key.Append(GenerationContext.ToolVersion).Append('|').Append(stats).Append('|');
+        key.Append(GenerationContext.ToolVersion).Append('|').Append(stats?.ToString() ?? "either").Append('|');
         foreach (var tree in context.Project.SyntaxTrees.OrderBy(t => t.FilePath, StringComparer.Ordinal))
             key.Append(tree.FilePath).Append('\0').Append(tree.Text).Append('\0');
         var index = new GeneratedFileIndex(cacheDirectory is null ? null : Path.Combine(cacheDirectory, FileName), Hash(Encoding.UTF8.GetBytes(key.ToString())));

@@ -1,28 +1,60 @@
+using GMac.Dsl.Files;
+
 namespace GMac.Cli.BindingPoints;
 
-/// <summary>The C# files under the given paths, skipping build output (<c>bin/</c>, <c>obj/</c>) and hidden folders.</summary>
+/// <summary>
+/// The C# files under the given paths, skipping build output (<c>bin/</c>, <c>obj/</c>), hidden
+/// folders and special files, each file listed once however many links lead to it.
+/// </summary>
 internal static class SourceScanner
 {
     public static (List<string> Files, List<BindingDiagnostic> Missing) Find(IReadOnlyList<string> paths)
     {
-        var files = new SortedSet<string>(StringComparer.Ordinal);
-        var missing = new List<BindingDiagnostic>();
-        foreach (var path in paths)
-        {
-            if (File.Exists(path)) files.Add(Path.GetFullPath(path));
-            else if (Directory.Exists(path)) Walk(new DirectoryInfo(path), files);
-            else missing.Add(new BindingDiagnostic(path, 1, 1, "GMAC0407", $"path '{path}' does not exist"));
-        }
-        return (files.ToList(), missing);
+        var scan = Scan(paths);
+        return (scan.Files, scan.Problems);
     }
 
-    private static void Walk(DirectoryInfo directory, SortedSet<string> files)
+    /// <summary>The files, the paths that could not be scanned (errors) and the special files left out (warnings).</summary>
+    public static SourceScan Scan(IReadOnlyList<string> paths)
     {
-        foreach (var file in directory.EnumerateFiles("*.cs")) files.Add(file.FullName);
-        foreach (var sub in directory.EnumerateDirectories())
+        var files = new SortedSet<string>(StringComparer.Ordinal);
+        var seen = new HashSet<string>(StringComparer.Ordinal);
+        var problems = new List<BindingDiagnostic>();
+        var skipped = new List<BindingDiagnostic>();
+        void Add(string file)
         {
-            if (sub.Name is "bin" or "obj" || sub.Name.StartsWith('.')) continue;
-            Walk(sub, files);
+            try
+            {
+                if (seen.Add(RealPath.Of(file))) files.Add(Path.GetFullPath(file));
+            }
+            catch (IOException e)
+            {
+                // the links along the path loop
+                problems.Add(new BindingDiagnostic(file, 1, 1, "GMAC0407", e.Message));
+            }
         }
+        foreach (var path in paths)
+        {
+            if (File.Exists(path))
+            {
+                if (SourceTree.WhyNotReadable(path) is { } why) skipped.Add(Skipped(path, why));
+                else Add(path);
+            }
+            else if (Directory.Exists(path))
+            {
+                var listing = SourceTree.List(path, "*.cs", name => name is "bin" or "obj" || name.StartsWith('.'));
+                foreach (var file in listing.Files) Add(file);
+                foreach (var s in listing.Skipped)
+                {
+                    if (s.IsError) problems.Add(new BindingDiagnostic(s.Path, 1, 1, "GMAC0407", s.Reason));
+                    else skipped.Add(Skipped(s.Path, s.Reason));
+                }
+            }
+            else problems.Add(new BindingDiagnostic(path, 1, 1, "GMAC0407", $"path '{path}' does not exist"));
+        }
+        return new SourceScan(files.ToList(), problems, skipped);
     }
+
+    private static BindingDiagnostic Skipped(string path, string reason) =>
+        new(Path.GetFullPath(path), 1, 1, SourceScan.SkippedCode, reason);
 }

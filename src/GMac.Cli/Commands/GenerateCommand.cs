@@ -1,5 +1,6 @@
 using System.Diagnostics;
 using System.Globalization;
+using System.Text;
 using GMac.Cli.BindingPoints;
 
 namespace GMac.Cli.Commands;
@@ -37,10 +38,15 @@ internal sealed class GenerateCommand : ICommand
         watch ??= Stopwatch.StartNew();
         var hitsBefore = context.Cas.TotalHits;
         var missesBefore = context.Cache.Misses;
-        var (files, missing) = SourceScanner.Find(paths);
-        foreach (var m in missing) error.WriteLine(m);
-        int scanned = 0, regions = 0, changed = 0, failed = missing.Count, outOfDate = 0, skipped = 0;
-        var index = GeneratedFileIndex.Open(context.CacheDirectory, context, stats);
+        var scan = SourceScanner.Scan(paths);
+        foreach (var m in scan.Problems) error.WriteLine(m);
+        foreach (var s in scan.Skipped) error.WriteLine(SourceScan.AsWarning(s));
+        var files = scan.Files;
+        int scanned = 0, regions = 0, changed = 0, failed = scan.Problems.Count, outOfDate = 0, skipped = 0;
+        // A check accepts regions with or without the statistics header, so it generates them with
+        // it (the header is one line, easy to take off) and keeps its own entries in the index.
+        var generateStats = stats || check;
+        var index = GeneratedFileIndex.Open(context.CacheDirectory, context, check ? null : stats);
         foreach (var path in files)
         {
             scanned++;
@@ -49,7 +55,7 @@ internal sealed class GenerateCommand : ICommand
                 skipped++;
                 continue;
             }
-            var generation = GenerateFile(path, context, stats, error);
+            var generation = GenerateFile(path, context, generateStats, error);
             if (generation is null)
             {
                 failed++;
@@ -70,20 +76,37 @@ internal sealed class GenerateCommand : ICommand
             }
             if (check)
             {
-                outOfDate++;
                 var stale = StaleRegions(generation).ToList();
+                if (stale.Count == 0)
+                {
+                    // every region is current, some with the header and some without
+                    index.Record(path, generation.File.Source.Encode(generation.File.Source.Text));
+                    continue;
+                }
+                outOfDate++;
                 foreach (var r in stale)
                     error.WriteLine(new BindingDiagnostic(path, r.Point.RegionLineNumber, 1, "GMAC0410", $"binding point '{r.Point.MacroName}' is out of date; run 'gmac generate'"));
                 continue;
             }
-            if (SafeFileWriter.Replace(path, generation.File.Source.Encode(generation.NewText)) is { } why)
+            byte[] newBytes;
+            try
+            {
+                newBytes = generation.File.Source.Encode(generation.NewText);
+            }
+            catch (EncoderFallbackException e)
+            {
+                error.WriteLine(new BindingDiagnostic(path, generation.File.Points[0].RegionLineNumber, 1, "GMAC0406", $"cannot write the generated code in the file's encoding ({generation.File.Source.Encoding.WebName}): {e.Message}; the file is unchanged"));
+                failed++;
+                continue;
+            }
+            if (SafeFileWriter.Replace(path, newBytes) is { } why)
             {
                 error.WriteLine(new BindingDiagnostic(path, generation.File.Points[0].RegionLineNumber, 1, "GMAC0406", $"cannot write the generated code: {why}; the file is unchanged"));
                 failed++;
                 continue;
             }
             changed++;
-            index.Record(path, generation.File.Source.Encode(generation.NewText));
+            index.Record(path, newBytes);
         }
         index.Save();
         context.Cache.Flush();
@@ -125,17 +148,31 @@ internal sealed class GenerateCommand : ICommand
         return BindingPointGenerator.Generate(file, context, stats);
     }
 
-    /// <summary>Regions whose body would change; the first region when only their layout would.</summary>
+    /// <summary>
+    /// The regions that differ from what generation writes: their <c>//GMac.</c> lines first, then
+    /// the code, with or without its statistics header (<paramref name="generation"/> has it).
+    /// </summary>
     private static IEnumerable<GeneratedRegion> StaleRegions(FileGeneration generation)
     {
         var lines = generation.File.Lines;
-        var stale = generation.Regions.Where(r =>
+        return generation.Regions.Where(r =>
         {
-            var body = string.Concat(Enumerable.Range(r.Point.RegionLine + 1, r.Point.EndRegionLine - r.Point.RegionLine - 1)
-                .Select(i => lines[i])
-                .Where(l => !l.TrimStart().StartsWith(BindingPointReader.LinePrefix, StringComparison.Ordinal)));
-            return !string.Equals(body, r.Code, StringComparison.Ordinal);
+            var inside = Enumerable.Range(r.Point.RegionLine + 1, r.Point.EndRegionLine - r.Point.RegionLine - 1).Select(i => lines[i]).ToList();
+            var text = string.Concat(inside);
+            var bindings = string.Concat(inside.Where(l => l.TrimStart().StartsWith(BindingPointReader.LinePrefix, StringComparison.Ordinal)));
+            var code = r.Code ?? "";
+            return !string.Equals(text, bindings + code, StringComparison.Ordinal)
+                && !string.Equals(text, bindings + WithoutStatistics(code), StringComparison.Ordinal);
         }).ToList();
-        return stale.Count > 0 ? stale : generation.Regions.Take(1);
     }
+
+    /// <summary>The emitted code without its first line, the statistics header.</summary>
+    private static string WithoutStatistics(string code)
+    {
+        var end = code.IndexOf('\n');
+        return end >= 0 && code.TrimStart().StartsWith(StatisticsHeader, StringComparison.Ordinal) ? code[(end + 1)..] : code;
+    }
+
+    /// <summary>How the emitter begins the statistics line.</summary>
+    private const string StatisticsHeader = "// GMac: ";
 }

@@ -75,4 +75,5 @@ public sealed class DiagnosticBag
         Warning("GMAC0201", span, $"{kind} '{name}' is never used");
     public void ReportOutputNeverAssigned(SourceSpan span, string macro, string name) =>
         Warning("GMAC0202", span, $"output '{name}' of macro '{macro}' is never assigned");
+    public void ReportSkippedFile(SourceSpan span, string reason) => Warning("GMAC0203", span, reason);
 }

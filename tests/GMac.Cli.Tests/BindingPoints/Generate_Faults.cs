@@ -127,7 +127,7 @@ public sealed class Generate_Faults : IDisposable
         Assert.Matches(@"Faulty\.cs\(15,9\): error GMAC0405: output 'w' is bound to '.+', which cannot be assigned", err);
     }
 
-    [Fact]
+    [NotAsRootFact]
     public void Read_only_file_is_reported_and_untouched()
     {
         var path = _temp.Write("Faulty.cs", FileWith(""));
