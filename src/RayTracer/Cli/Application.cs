@@ -17,6 +17,7 @@ public static class Application
           raytracer render [SCENE] -o OUT.png [--width W] [--height H] [--spp N] [--seed S] [--threads T] [--max-depth D] [--image IMG.png]
           raytracer bench [--triangles N] [--width W] [--height H] [--threads T]
         SCENE defaults to 'spheres'; 'raytracer list' shows all scenes. --image maps a PNG in texture-image.
+        --max-depth is at most 100; rays whose throughput falls below 1e-5 are not traced, whatever the depth.
         """;
 
     public static int Run(string[] args, TextWriter stdout, TextWriter stderr, bool interactiveProgress = false)
@@ -75,7 +76,7 @@ public static class Application
             Width = options.GetInt("--width", 1, 16384),
             Height = options.GetInt("--height", 1, 16384),
             SamplesPerPixel = options.GetInt("--spp", 1, 65536),
-            MaxDepth = options.GetInt("--max-depth", 0, 1000),
+            MaxDepth = options.GetInt("--max-depth", 0, ViewPlane.DeepestMaxDepth),
             ImagePath = options.GetString("--image"),
         };
         var seed = options.GetULong("--seed") ?? 0;

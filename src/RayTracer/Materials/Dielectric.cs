@@ -44,16 +44,19 @@ public sealed class Dielectric : Phong
 
         if (FresnelBtdf.TotalInternalReflection(sr))
         {
-            var lr = tracer.TraceRay(reflected, sr.Depth + 1, out var t);
+            var lr = tracer.TraceSpawned(sr, reflected, RGBColor.White, out var t);
             return Attenuation(reflectedFilter, t) * lr;
         }
 
         var ft = FresnelBtdf.SampleF(sr, wo, out var wt);
         var transmittedFilter = ndotwi < 0 ? FilterOutside : FilterInside;
-        var lrr = tracer.TraceRay(reflected, sr.Depth + 1, out var tr);
-        var ltt = tracer.TraceRay(new Ray(sr.HitPoint, wt), sr.Depth + 1, out var tt);
-        return Attenuation(reflectedFilter, tr) * fr * lrr * Math.Abs(ndotwi)
-            + Attenuation(transmittedFilter, tt) * ft * ltt * Math.Abs(sr.Normal.Dot(wt));
+        var cosI = Math.Abs(ndotwi);
+        var cosT = Math.Abs(sr.Normal.Dot(wt));
+        // Beer's attenuation depends on the hit distance, so only the Fresnel factors enter the throughput.
+        var lrr = tracer.TraceSpawned(sr, reflected, fr * cosI, out var tr);
+        var ltt = tracer.TraceSpawned(sr, new Ray(sr.HitPoint, wt), ft * cosT, out var tt);
+        return Attenuation(reflectedFilter, tr) * fr * lrr * cosI
+            + Attenuation(transmittedFilter, tt) * ft * ltt * cosT;
     }
 
     public override RGBColor Shade(ShadingRecord sr) => base.Shade(sr) + ReflectAndRefract(sr);

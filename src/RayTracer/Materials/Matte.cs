@@ -44,6 +44,6 @@ public class Matte : Material
         if (pdf <= 0 || ndotwi <= 0)
             return RGBColor.Black;
         var tracer = sr.World!.Tracer!;
-        return f * tracer.TraceRay(new Ray(sr.HitPoint, wi), sr.Depth + 1) * (ndotwi / pdf);
+        return f * tracer.TraceSpawned(sr, new Ray(sr.HitPoint, wi), f * (ndotwi / pdf)) * (ndotwi / pdf);
     }
 }

@@ -19,7 +19,8 @@ public class Reflective : Phong
     {
         var wo = -sr.Ray.d.Normalized();
         var fr = ReflectiveBrdf.SampleF(sr, wo, out var wi, out _);
-        return fr * sr.World!.Tracer!.TraceRay(new Ray(sr.HitPoint, wi), sr.Depth + 1) * Math.Abs(sr.Normal.Dot(wi));
+        var cos = Math.Abs(sr.Normal.Dot(wi));
+        return fr * sr.World!.Tracer!.TraceSpawned(sr, new Ray(sr.HitPoint, wi), fr * cos) * cos;
     }
 
     public override RGBColor Shade(ShadingRecord sr) => base.Shade(sr) + Mirror(sr);

@@ -25,10 +25,12 @@ public sealed class Transparent : Phong
         var fr = ReflectiveBrdf.SampleF(sr, wo, out var wi, out _);
         var reflected = new Ray(sr.HitPoint, wi);
         if (SpecularBtdf.TotalInternalReflection(sr))
-            return tracer.TraceRay(reflected, sr.Depth + 1); // all light is reflected
+            return tracer.TraceSpawned(sr, reflected, RGBColor.White); // all light is reflected
         var ft = SpecularBtdf.SampleF(sr, wo, out var wt);
-        return fr * tracer.TraceRay(reflected, sr.Depth + 1) * Math.Abs(sr.Normal.Dot(wi))
-            + ft * tracer.TraceRay(new Ray(sr.HitPoint, wt), sr.Depth + 1) * Math.Abs(sr.Normal.Dot(wt));
+        var cosI = Math.Abs(sr.Normal.Dot(wi));
+        var cosT = Math.Abs(sr.Normal.Dot(wt));
+        return fr * tracer.TraceSpawned(sr, reflected, fr * cosI) * cosI
+            + ft * tracer.TraceSpawned(sr, new Ray(sr.HitPoint, wt), ft * cosT) * cosT;
     }
 
     public override RGBColor Shade(ShadingRecord sr) => base.Shade(sr) + ReflectAndRefract(sr);

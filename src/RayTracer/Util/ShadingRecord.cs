@@ -32,6 +32,12 @@ public sealed class ShadingRecord
     /// <summary>Recursion depth of the ray that produced this record.</summary>
     public int Depth { get; set; }
 
+    /// <summary>
+    /// Throughput of the path that reached this hit: the product of the reflectances and transmittances
+    /// (largest channel) that scale its radiance on the way back to the pixel. 1 for primary rays.
+    /// </summary>
+    public double Weight { get; set; } = 1.0;
+
     /// <summary>Ray parameter of the hit.</summary>
     public double T { get; set; }
 
@@ -52,6 +58,7 @@ public sealed class ShadingRecord
         Normal = default;
         Ray = default;
         Depth = 0;
+        Weight = 1.0;
         T = 0;
         Direction = default;
         TextureCoordinates = default;

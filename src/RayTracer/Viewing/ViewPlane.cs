@@ -34,8 +34,23 @@ public sealed class ViewPlane
 
     public GamutMapping GamutMapping { get; set; } = GamutMapping.Clamp;
 
+    /// <summary>The largest <see cref="MaxDepth"/> the command line accepts; deeper rays add nothing visible.</summary>
+    public const int DeepestMaxDepth = 100;
+
+    /// <summary>
+    /// Default <see cref="MinimumThroughput"/>: a cut path would have to carry almost 400 times the light
+    /// of a white pixel to move it by one step of an 8-bit image (1/255).
+    /// </summary>
+    public const double DefaultMinimumThroughput = 1e-5;
+
     /// <summary>Deepest recursion level a tracer follows (0 = primary rays only).</summary>
     public int MaxDepth { get; set; } = 5;
+
+    /// <summary>
+    /// Rays whose path throughput (the product of the reflectances and transmittances that scale their
+    /// radiance) is below this are not traced; 0 traces every ray up to <see cref="MaxDepth"/>.
+    /// </summary>
+    public double MinimumThroughput { get; set; } = DefaultMinimumThroughput;
 
     /// <summary>Pixel sampler; one centred sample when null.</summary>
     public Sampler Sampler { get; set; } = new RegularSampler(1);

@@ -115,6 +115,34 @@ public sealed class Application_Commands : IDisposable
     }
 
     [Fact]
+    public void Absurd_max_depth_is_a_usage_error_naming_the_limit()
+    {
+        var output = Path.Combine(_dir, "deep.png");
+        var (code, _, err) = Run("render", "spheres", "-o", output, "--max-depth", "400", "--width", "2", "--height", "2", "--spp", "1");
+        Assert.Equal(2, code);
+        Assert.Contains("--max-depth must be between 0 and 100, got 400", err);
+        Assert.False(File.Exists(output));
+
+        Assert.Equal(0, Run("render", "material-dielectric", "-o", output, "--max-depth", "100", "--width", "8", "--height", "6", "--spp", "1").Code);
+        Assert.True(File.Exists(output));
+    }
+
+    [Fact]
+    public void Render_never_touches_a_user_file_named_like_a_temporary()
+    {
+        var folder = Path.Combine(_dir, "out");
+        Directory.CreateDirectory(folder);
+        var output = Path.Combine(folder, "keep.png");
+        File.WriteAllText(output + ".tmp", "notes");
+
+        Assert.Equal(0, Run("render", "spheres", "-o", output, "--width", "4", "--height", "4", "--spp", "1").Code);
+
+        Assert.Equal("notes", File.ReadAllText(output + ".tmp"));
+        Assert.Equal(4, PngDecoder.Load(output).Width);
+        Assert.Equal(2, Directory.GetFiles(folder).Length);
+    }
+
+    [Fact]
     public void Bench_reports_every_acceleration_structure()
     {
         var (code, output, _) = Run("bench", "--triangles", "200", "--width", "8", "--height", "6", "--threads", "1");

@@ -23,6 +23,7 @@ public class Dielectric_Slab
         var r = Math.Pow((ior - 1) / (ior + 1), 2);
         var world = TestScenes.OrthographicWorld(1, 0.01, w => new WhittedTracer(w));
         world.ViewPlane.MaxDepth = 60;
+        world.ViewPlane.MinimumThroughput = 0; // the series is checked to 9 places, so trace every ray
         world.BackgroundColor = RGBColor.White;
         world.Add(new Box(new Point3D(-10, -10, -0.5), new Point3D(10, 10, 0.5))
         {

@@ -51,6 +51,12 @@ public sealed class Mesh : ObjectNature
 
     public int TriangleCount => Indices.Length / 3;
 
+    /// <summary>
+    /// Problems the reader tolerated in the file this mesh came from, each as <c>file(line): message</c>;
+    /// empty for meshes built in code.
+    /// </summary>
+    public IReadOnlyList<string> Warnings { get; init; } = [];
+
     public BoundingBox Bounds
     {
         get

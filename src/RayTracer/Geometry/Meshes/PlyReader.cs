@@ -9,7 +9,8 @@ namespace RayTracer.Geometry.Meshes;
 /// Reads triangle meshes from PLY files (ASCII, binary little and big endian). Vertex x, y, z are
 /// required; nx, ny, nz and u, v (or s, t) are picked up when present. Polygons are split into
 /// triangle fans; other elements and properties are skipped. Problems raise
-/// <see cref="MeshFormatException"/> with the line (ASCII) or byte offset (binary).
+/// <see cref="MeshFormatException"/> with the line (ASCII) or byte offset (binary). Unknown header lines
+/// (some exporters write free text without 'comment') are skipped and listed in <see cref="Mesh.Warnings"/>.
 /// </summary>
 public static class PlyReader
 {
@@ -24,7 +25,8 @@ public static class PlyReader
     public static Mesh Read(Stream stream, string fileName)
     {
         ArgumentNullException.ThrowIfNull(stream);
-        var input = new PlyInput(new BufferedStream(stream, 1 << 16), fileName);
+        long? length = stream.CanSeek ? stream.Length - stream.Position : null;
+        var input = new PlyInput(new BufferedStream(stream, 1 << 16), fileName, length);
         Header header = ReadHeader(input);
         return ReadBody(input, header);
     }
@@ -59,12 +61,19 @@ public static class PlyReader
         public PlyFormat Format { get; set; }
 
         public List<Element> Elements { get; } = [];
+
+        public List<string> Warnings { get; } = [];
     }
 
     private static Header ReadHeader(PlyInput input)
     {
         var header = new Header();
         string? magic = input.ReadHeaderLine();
+        if (magic is null)
+        {
+            throw new MeshFormatException(input.FileName, "the file is empty; a PLY file starts with the line 'ply'", 1, column: 1);
+        }
+
         if (magic != "ply")
         {
             throw input.ErrorAtLine("not a PLY file: the first line must be 'ply'");
@@ -125,7 +134,9 @@ public static class PlyReader
                     input.BeginBody(header.Format);
                     return header;
                 default:
-                    throw input.ErrorAtLine($"unknown header keyword '{words[0]}'");
+                    // Common readers skip such lines too (old Blender exports write "Created by ..." bare).
+                    header.Warnings.Add($"{input.FileName}({input.Line}): skipped unknown header line '{line}'");
+                    break;
             }
         }
     }
@@ -193,6 +204,12 @@ public static class PlyReader
         var indices = new List<int>();
         bool facesSeen = false;
         var values = new double[Math.Max(1, vertexElement.Properties.Count)];
+        var mustBeFinite = new bool[values.Length];
+        // NaN or infinite values would silently poison bounds, normals and texture lookups.
+        foreach (int used in new[] { ix, iy, iz }.Concat(hasNormals ? [inx, iny, inz] : []).Concat(hasUvs ? [iu, iv] : []))
+        {
+            mustBeFinite[used] = true;
+        }
 
         foreach (Element element in header.Elements)
         {
@@ -211,6 +228,13 @@ public static class PlyReader
                 facesSeen = true;
             }
 
+            if (element.Properties.Count == 0)
+            {
+                // Nothing to read, however large the count: looping over it would only spin.
+                continue;
+            }
+
+            input.EnsureRoomFor(element);
             for (long i = 0; i < element.Count; i++)
             {
                 for (int p = 0; p < element.Properties.Count; p++)
@@ -218,9 +242,16 @@ public static class PlyReader
                     Property property = element.Properties[p];
                     if (!property.IsList)
                     {
+                        long start = input.Offset;
                         double value = input.ReadScalar(property.Type, element.Name, i);
                         if (isVertex)
                         {
+                            if (mustBeFinite[p] && !double.IsFinite(value))
+                            {
+                                throw input.ErrorHere(
+                                    $"{element.Name} {i} has a non-finite {property.Name} ({value.ToString(CultureInfo.InvariantCulture)})", start);
+                            }
+
                             values[p] = value;
                         }
 
@@ -232,6 +263,8 @@ public static class PlyReader
                     {
                         throw input.ErrorHere($"negative list length in {element.Name} {i}");
                     }
+
+                    input.EnsureRoomFor(count, property.Type, element.Name, i);
 
                     if (p == listIndex)
                     {
@@ -269,7 +302,7 @@ public static class PlyReader
             }
         }
 
-        return new Mesh([.. vertices], [.. indices], normals?.ToArray(), uvs?.ToArray());
+        return new Mesh([.. vertices], [.. indices], normals?.ToArray(), uvs?.ToArray()) { Warnings = header.Warnings };
     }
 
     private static void AddIndex(List<int> indices, long index, int vertexCount, long face, PlyInput input)
@@ -283,7 +316,7 @@ public static class PlyReader
     }
 
     /// <summary>Byte-level reader that knows the current line (text) and offset (binary) for messages.</summary>
-    private sealed class PlyInput(Stream stream, string fileName)
+    private sealed class PlyInput(Stream stream, string fileName, long? length)
     {
         private readonly byte[] _scratch = new byte[8];
         private readonly StringBuilder _token = new();
@@ -332,8 +365,49 @@ public static class PlyReader
 
         public MeshFormatException ErrorAtLine(string problem) => new(FileName, problem, Line);
 
-        public MeshFormatException ErrorHere(string problem) =>
-            _format == PlyFormat.Ascii ? new(FileName, problem, Line + 1) : new(FileName, problem, null, Offset);
+        /// <summary>An error at the current token (ASCII) or at <paramref name="offset"/>, by default the current one (binary).</summary>
+        public MeshFormatException ErrorHere(string problem, long? offset = null) =>
+            _format == PlyFormat.Ascii ? new(FileName, problem, Line + 1) : new(FileName, problem, null, offset ?? Offset);
+
+        /// <summary>
+        /// In a binary file of known length, fails at once when the remaining bytes cannot hold every item
+        /// of <paramref name="element"/>, rather than looping over a count a forged header made huge.
+        /// ASCII items take at least one token each, so those loops end at the end of the file anyway.
+        /// </summary>
+        public void EnsureRoomFor(Element element)
+        {
+            if (_format == PlyFormat.Ascii || length is not { } total)
+            {
+                return;
+            }
+
+            // A list takes at least its length prefix; its items are checked when the length is known.
+            long itemBytes = element.Properties.Sum(p => (long)Size(p.IsList ? p.CountType : p.Type));
+            long remaining = total - Offset;
+            if (element.Count > remaining / itemBytes)
+            {
+                throw new MeshFormatException(
+                    FileName,
+                    $"element '{element.Name}' declares {element.Count} items of at least {itemBytes} bytes, but only {remaining} bytes remain",
+                    null,
+                    Offset);
+            }
+        }
+
+        /// <summary>Fails at once when a binary list claims more items than the rest of the file can hold.</summary>
+        public void EnsureRoomFor(long count, Scalar type, string element, long index)
+        {
+            if (_format == PlyFormat.Ascii || length is not { } total)
+            {
+                return;
+            }
+
+            long remaining = total - Offset;
+            if (count > remaining / Size(type))
+            {
+                throw ErrorHere($"a list in {element} {index} declares {count} items, but only {remaining} bytes remain");
+            }
+        }
 
         public long ReadInteger(Scalar type, string element, long index)
         {
@@ -359,13 +433,7 @@ public static class PlyReader
                 return value;
             }
 
-            int size = type switch
-            {
-                Scalar.Int8 or Scalar.UInt8 => 1,
-                Scalar.Int16 or Scalar.UInt16 => 2,
-                Scalar.Int32 or Scalar.UInt32 or Scalar.Float32 => 4,
-                _ => 8,
-            };
+            int size = Size(type);
             Span<byte> bytes = _scratch.AsSpan(0, size);
             int read = stream.ReadAtLeast(bytes, size, throwOnEndOfStream: false);
             if (read < size)
@@ -388,6 +456,14 @@ public static class PlyReader
                 _ => little ? BinaryPrimitives.ReadDoubleLittleEndian(bytes) : BinaryPrimitives.ReadDoubleBigEndian(bytes),
             };
         }
+
+        private static int Size(Scalar type) => type switch
+        {
+            Scalar.Int8 or Scalar.UInt8 => 1,
+            Scalar.Int16 or Scalar.UInt16 => 2,
+            Scalar.Int32 or Scalar.UInt32 or Scalar.Float32 => 4,
+            _ => 8,
+        };
 
         private string Finish(StringBuilder line)
         {

@@ -29,12 +29,18 @@ public static class StlReader
             data = memory.ToArray();
         }
 
+        if (data.Length == 0)
+        {
+            throw new MeshFormatException(fileName, "the file is empty; an STL file starts with 'solid' (ASCII) or an 84-byte header (binary)", 1, column: 1);
+        }
+
+        // The declared triangle count must match the file size exactly, so it can never drive a loop past the data.
         if (data.Length >= 84)
         {
             uint count = BinaryPrimitives.ReadUInt32LittleEndian(data.AsSpan(80));
             if (84 + 50L * count == data.Length)
             {
-                return ReadBinary(data, count);
+                return ReadBinary(data, count, fileName);
             }
         }
 
@@ -71,7 +77,7 @@ public static class StlReader
         return data.AsSpan(i).StartsWith("solid"u8);
     }
 
-    private static Mesh ReadBinary(byte[] data, uint count)
+    private static Mesh ReadBinary(byte[] data, uint count, string fileName)
     {
         var builder = new VertexMerger();
         for (long f = 0; f < count; f++)
@@ -79,7 +85,18 @@ public static class StlReader
             long at = 84 + 50 * f + 12;
             for (int k = 0; k < 3; k++)
             {
-                ReadOnlySpan<byte> s = data.AsSpan((int)(at + 12 * k), 12);
+                int start = (int)(at + 12 * k);
+                ReadOnlySpan<byte> s = data.AsSpan(start, 12);
+                for (int c = 0; c < 3; c++)
+                {
+                    float value = BinaryPrimitives.ReadSingleLittleEndian(s[(4 * c)..]);
+                    if (!float.IsFinite(value))
+                    {
+                        throw new MeshFormatException(
+                            fileName, $"triangle {f} vertex {k} has a non-finite {"xyz"[c]} ({value.ToString(CultureInfo.InvariantCulture)})", null, start + 4 * c);
+                    }
+                }
+
                 builder.Add(new Point3D(
                     BinaryPrimitives.ReadSingleLittleEndian(s),
                     BinaryPrimitives.ReadSingleLittleEndian(s[4..]),
@@ -96,6 +113,7 @@ public static class StlReader
         var builder = new VertexMerger();
         tokens.Expect("solid");
         tokens.SkipRestOfLine();
+        long facet = 0;
         while (true)
         {
             string word = tokens.Next("'facet' or 'endsolid'");
@@ -127,7 +145,8 @@ public static class StlReader
             while (tokens.Peek() == "vertex")
             {
                 tokens.Next("vertex");
-                corners.Add(new Point3D(tokens.Number(), tokens.Number(), tokens.Number()));
+                string where = $"facet {facet} vertex {corners.Count}";
+                corners.Add(new Point3D(tokens.Coordinate(where, 'x'), tokens.Coordinate(where, 'y'), tokens.Coordinate(where, 'z')));
             }
 
             if (corners.Count < 3)
@@ -137,6 +156,7 @@ public static class StlReader
 
             tokens.Expect("endloop");
             tokens.Expect("endfacet");
+            facet++;
             for (int k = 2; k < corners.Count; k++)
             {
                 builder.Add(corners[0]);
@@ -229,6 +249,18 @@ public static class StlReader
             if (!double.TryParse(word, NumberStyles.Float, CultureInfo.InvariantCulture, out double value))
             {
                 throw Error($"'{word}' is not a number");
+            }
+
+            return value;
+        }
+
+        /// <summary>A vertex coordinate: a number that must be finite.</summary>
+        public double Coordinate(string where, char axis)
+        {
+            double value = Number();
+            if (!double.IsFinite(value))
+            {
+                throw Error($"{where} has a non-finite {axis} ({value.ToString(CultureInfo.InvariantCulture)})");
             }
 
             return value;

@@ -1,6 +1,7 @@
 using System.Buffers.Binary;
 using System.IO.Compression;
 using System.Text;
+using RayTracer.Util;
 
 namespace RayTracer.Viewing.Imaging;
 
@@ -33,27 +34,16 @@ public static class PngEncoder
     }
 
     /// <summary>
-    /// Writes the PNG through a temporary file in the same folder and renames it into place,
-    /// so a reader never sees a partly written image.
+    /// Writes the PNG atomically (see <see cref="AtomicFile"/>), so a reader never sees a partly
+    /// written image; the folder is created if needed.
     /// </summary>
     public static void Save(PixelImage image, string path)
     {
         var bytes = Encode(image);
-        var full = Path.GetFullPath(path);
-        var directory = Path.GetDirectoryName(full);
+        var directory = Path.GetDirectoryName(Path.GetFullPath(path));
         if (!string.IsNullOrEmpty(directory))
             Directory.CreateDirectory(directory);
-        var temp = full + ".tmp";
-        try
-        {
-            File.WriteAllBytes(temp, bytes);
-            File.Move(temp, full, overwrite: true);
-        }
-        finally
-        {
-            if (File.Exists(temp))
-                File.Delete(temp);
-        }
+        AtomicFile.Write(path, bytes);
     }
 
     private static byte ColorType(int channels) => channels switch

@@ -55,7 +55,7 @@ public class MeshFiles_Malformed
     {
         string header = "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\nproperty double x\nproperty double y\nproperty double z\nend_header\n";
         byte[] bytes = [.. Encoding.ASCII.GetBytes(header), .. new byte[30]];
-        var e = Assert.Throws<MeshFormatException>(() => PlyReader.Read(new MemoryStream(bytes), "huge.ply"));
+        var e = Assert.Throws<MeshFormatException>(() => PlyReader.Read(new ForwardOnlyStream(bytes), "huge.ply"));
         Assert.Contains("vertex 1", e.Message);
         Assert.Equal(bytes.Length, e.ByteOffset);
     }
@@ -76,10 +76,16 @@ public class MeshFiles_Malformed
         int headerLength = Encoding.ASCII.GetString(bytes).IndexOf("end_header\n", StringComparison.Ordinal) + "end_header\n".Length;
         // Cut inside the z coordinate of vertex 2: 2 vertices of 24 bytes, plus 16 bytes, plus 3 more.
         int cut = headerLength + 2 * 24 + 16 + 3;
-        var e = Assert.Throws<MeshFormatException>(() => PlyReader.Read(new MemoryStream(bytes[..cut]), "cut.ply"));
+        // Read as a pipe, the reader only finds out at the cut.
+        var e = Assert.Throws<MeshFormatException>(() => PlyReader.Read(new ForwardOnlyStream(bytes[..cut]), "cut.ply"));
         Assert.Equal(cut, e.ByteOffset);
         Assert.Contains("vertex 2", e.Message);
         Assert.Null(e.Line);
+
+        // Knowing the length, it refuses the vertices before reading them.
+        e = Assert.Throws<MeshFormatException>(() => PlyReader.Read(new MemoryStream(bytes[..cut]), "cut.ply"));
+        Assert.Equal(headerLength, e.ByteOffset);
+        Assert.Contains($"element 'vertex' declares 6 items of at least 24 bytes, but only {cut - headerLength} bytes remain", e.Message);
     }
 
     [Fact]

@@ -70,7 +70,7 @@ public class PngEncoder_RoundTrip
             var image = RandomImage(4, 4, 3, 3);
             PngEncoder.Save(image, path);
             Assert.Equal(image.Data, PngDecoder.Load(path).Data);
-            Assert.False(File.Exists(path + ".tmp"));
+            Assert.Equal([path], Directory.GetFiles(Path.GetDirectoryName(path)!));
         }
         finally
         {
