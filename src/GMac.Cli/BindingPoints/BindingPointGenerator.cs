@@ -72,7 +72,11 @@ internal static class BindingPointGenerator
         }
     }
 
-    private static string Splice(BindingPointFile file, IReadOnlyList<GeneratedRegion> regions)
+    /// <summary>
+    /// The file's text with each region's body replaced by its code (a region without code keeps
+    /// its body); <paramref name="bodies"/>, when given, receives where each new body lies in it.
+    /// </summary>
+    internal static string Splice(BindingPointFile file, IReadOnlyList<GeneratedRegion> regions, List<(GeneratedRegion Region, int Start, int End)>? bodies = null)
     {
         var text = new StringBuilder(file.Source.Text.Length + 1024);
         var line = 0;
@@ -81,9 +85,12 @@ internal static class BindingPointGenerator
             var point = region.Point;
             for (; line <= point.RegionLine; line++) text.Append(file.Lines[line]);
             for (; line < point.EndRegionLine; line++)
-                if (file.Lines[line].TrimStart().StartsWith(BindingPointReader.LinePrefix, StringComparison.Ordinal))
+                if (region.Code is null || file.Lines[line].TrimStart().StartsWith(BindingPointReader.LinePrefix, StringComparison.Ordinal))
                     text.Append(file.Lines[line]);
+            if (region.Code is null) continue;
+            var start = text.Length;
             text.Append(region.Code);
+            bodies?.Add((region, start, text.Length));
         }
         for (; line < file.Lines.Count; line++) text.Append(file.Lines[line]);
         return text.ToString();
