@@ -4,9 +4,11 @@ namespace GMac.Cli.BindingPoints;
 
 /// <summary>
 /// A <c>#region GMac : Macro</c> … <c>#endregion</c> block of a C# file. Lines are 0-based
-/// indexes into the file's lines; <see cref="RegionLineNumber"/> is the 1-based line for messages.
+/// indexes into the file's lines; <see cref="RegionLineNumber"/> and <see cref="RegionColumn"/>
+/// locate the <c>#region</c> for messages. <see cref="Scope"/> holds the names its temporaries must avoid.
 /// </summary>
-internal sealed record BindingPoint(string MacroName, int RegionLine, int EndRegionLine, string Indent, IReadOnlyList<BindingLine> Bindings)
+internal sealed record BindingPoint(string MacroName, int RegionLine, int EndRegionLine, string Indent, IReadOnlyList<BindingLine> Bindings,
+    int RegionColumn, RegionScope Scope)
 {
     public int RegionLineNumber => RegionLine + 1;
 

@@ -2,7 +2,8 @@ namespace GMac.Cli.BindingPoints;
 
 /// <summary>
 /// A C# file split into lines (each with its own line break) with the binding points found in
-/// it, the problems found while reading them, and the identifiers used outside them.
+/// it, the problems found while reading them, and the identifiers of its bind lines (which no
+/// temporary of the file may take, whatever scope they come from).
 /// </summary>
 internal sealed record BindingPointFile(
     SourceText Source,

@@ -17,16 +17,19 @@ internal static class BindingPointGenerator
     {
         var diagnostics = new List<BindingDiagnostic>(file.Diagnostics);
         var regions = new List<GeneratedRegion>();
-        // Names taken by user code, plus the temporaries of regions already generated in this file
-        // (two regions may share a method). Deterministic, so a second run picks the same names.
-        var taken = new HashSet<string>(file.Identifiers, StringComparer.Ordinal);
+        // Temporaries avoid the names of every bind line, the names in the region's scope, and the
+        // temporaries of regions already generated in the same member. All of these come from the
+        // file's text in order, so a second run picks the same names.
+        var temporariesByScope = new Dictionary<int, HashSet<string>>();
         foreach (var point in file.Points)
         {
-            var region = GenerateRegion(file, point, context, includeStatistics, taken, diagnostics);
+            var earlier = temporariesByScope.TryGetValue(point.Scope.Id, out var t) ? t : temporariesByScope[point.Scope.Id] = new(StringComparer.Ordinal);
+            bool IsTaken(string name) => file.Identifiers.Contains(name) || point.Scope.Names.Contains(name) || earlier.Contains(name);
+            var region = GenerateRegion(file, point, context, includeStatistics, IsTaken, diagnostics);
             regions.Add(region);
             if (region.Code is not null)
                 foreach (var token in SyntaxFactory.ParseTokens(region.Code).Where(t => t.IsKind(SyntaxKind.IdentifierToken)))
-                    taken.Add(token.ValueText);
+                    earlier.Add(token.ValueText);
         }
         diagnostics.Sort((a, b) => a.Line != b.Line ? a.Line.CompareTo(b.Line) : a.Column.CompareTo(b.Column));
         if (diagnostics.Count > 0) return new FileGeneration(file, file.Source.Text, regions, diagnostics);
@@ -34,40 +37,22 @@ internal static class BindingPointGenerator
     }
 
     private static GeneratedRegion GenerateRegion(BindingPointFile file, BindingPoint point, GenerationContext context, bool includeStatistics,
-        HashSet<string> taken, List<BindingDiagnostic> diagnostics)
+        Func<string, bool> isTaken, List<BindingDiagnostic> diagnostics)
     {
-        var before = diagnostics.Count;
-        if (context.Project.Model.Macros.TryGetValue(point.MacroName, out var macro))
-        {
-            var outputs = macro.Outputs.Select(o => o.Name).ToHashSet(StringComparer.Ordinal);
-            foreach (var binding in point.Bindings)
-            {
-                var parameter = binding.Spec switch
-                {
-                    CoefficientBindingSpec c => c.Parameter,
-                    ClassBindingSpec c => c.Parameter,
-                    _ => null,
-                };
-                if (parameter is not null && outputs.Contains(parameter) && !binding.TargetIsAssignable)
-                    diagnostics.Add(new(file.Path, binding.Spec.Line, binding.Spec.Column, "GMAC0405",
-                        $"output '{parameter}' is bound to '{binding.TargetText}', which cannot be assigned; use a variable, field, property or element, e.g. \"<w.x>\""));
-            }
-        }
-        if (diagnostics.Count > before) return new GeneratedRegion(point, null, null);
-
         GenerationOutcome outcome;
         try
         {
-            outcome = context.Generator.Generate(point.MacroName, point.Specs, point.RegionLineNumber);
+            outcome = BindingTextCheck.Generate(context, point.MacroName, point.Specs, point.RegionLineNumber);
         }
         catch (Exception e) when (e is not OutOfMemoryException)
         {
             // A defect of the generator must not take the other files down: report it here.
-            diagnostics.Add(new(file.Path, point.RegionLineNumber, 1, "GMAC0409", $"internal error while generating '{point.MacroName}': {e.GetType().Name}: {e.Message}"));
+            diagnostics.Add(new(file.Path, point.RegionLineNumber, point.RegionColumn, "GMAC0409", $"internal error while generating '{point.MacroName}': {e.GetType().Name}: {e.Message}"));
             return new GeneratedRegion(point, null, null);
         }
+        // Errors about the region as a whole come at its line, column 1: point at the #region itself.
         foreach (var e in outcome.Errors)
-            diagnostics.Add(new(file.Path, e.Line, e.Column, e.Code, e.Message));
+            diagnostics.Add(new(file.Path, e.Line, e.Line == point.RegionLineNumber && e.Column == 1 ? point.RegionColumn : e.Column, e.Code, e.Message));
         if (!outcome.Succeeded) return new GeneratedRegion(point, outcome, null);
         try
         {
@@ -76,18 +61,22 @@ internal static class BindingPointGenerator
                 Indent = point.Indent,
                 NewLine = file.Source.NewLine,
                 IncludeStatistics = includeStatistics,
-                IsNameTaken = taken.Contains,
+                IsNameTaken = isTaken,
             });
             return new GeneratedRegion(point, outcome, code);
         }
         catch (InvalidOperationException e)
         {
-            diagnostics.Add(new(file.Path, point.RegionLineNumber, 1, "GMAC0409", $"cannot print the code of macro '{point.MacroName}': {e.Message}"));
+            diagnostics.Add(new(file.Path, point.RegionLineNumber, point.RegionColumn, "GMAC0409", $"cannot print the code of macro '{point.MacroName}': {e.Message}"));
             return new GeneratedRegion(point, outcome, null);
         }
     }
 
-    private static string Splice(BindingPointFile file, IReadOnlyList<GeneratedRegion> regions)
+    /// <summary>
+    /// The file's text with each region's body replaced by its code (a region without code keeps
+    /// its body); <paramref name="bodies"/>, when given, receives where each new body lies in it.
+    /// </summary>
+    internal static string Splice(BindingPointFile file, IReadOnlyList<GeneratedRegion> regions, List<(GeneratedRegion Region, int Start, int End)>? bodies = null)
     {
         var text = new StringBuilder(file.Source.Text.Length + 1024);
         var line = 0;
@@ -96,9 +85,12 @@ internal static class BindingPointGenerator
             var point = region.Point;
             for (; line <= point.RegionLine; line++) text.Append(file.Lines[line]);
             for (; line < point.EndRegionLine; line++)
-                if (file.Lines[line].TrimStart().StartsWith(BindingPointReader.LinePrefix, StringComparison.Ordinal))
+                if (region.Code is null || file.Lines[line].TrimStart().StartsWith(BindingPointReader.LinePrefix, StringComparison.Ordinal))
                     text.Append(file.Lines[line]);
+            if (region.Code is null) continue;
+            var start = text.Length;
             text.Append(region.Code);
+            bodies?.Add((region, start, text.Length));
         }
         for (; line < file.Lines.Count; line++) text.Append(file.Lines[line]);
         return text.ToString();

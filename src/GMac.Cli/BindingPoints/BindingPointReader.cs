@@ -26,12 +26,14 @@ internal static partial class BindingPointReader
         var text = tree.GetText();
         var lines = SplitLines(text);
         var diagnostics = new List<BindingDiagnostic>();
-        var points = new List<BindingPoint>();
-        var open = new Stack<(int Line, int Column, string? Macro)>();
+        var open = new Stack<(int Line, int Column, string? Macro, int Position)>();
+        var found = new List<(string Macro, int Line, int Column, int EndLine, int Position)>();
 
         // Roslyn parses an unmatched #endregion as a bad directive, so classify directives by their text.
         foreach (var directive in root.DescendantTrivia().Where(t => t.IsDirective))
         {
+            // A directive in a branch the compiler skips (#if false) is no directive: its region is not code.
+            if (directive.GetStructure() is DirectiveTriviaSyntax { IsActive: false }) continue;
             var position = tree.GetLineSpan(directive.Span).StartLinePosition;
             var line = position.Line;
             var column = position.Character + 1;
@@ -56,7 +58,7 @@ internal static partial class BindingPointReader
                     diagnostics.Add(new(path, line + 1, column, "GMAC0403",
                         $"region nested inside the GMac region of line {outer.Line + 1}: its body is generated, so it cannot hold other regions"));
                 }
-                open.Push((line, column, macro));
+                open.Push((line, column, macro, directive.SpanStart));
                 continue;
             }
             if (open.Count == 0)
@@ -66,18 +68,30 @@ internal static partial class BindingPointReader
             }
             var region = open.Pop();
             if (region.Macro is { Length: > 0 } name && !open.Any(o => o.Macro is not null))
-                points.Add(ReadPoint(path, lines, name, region.Line, line, diagnostics));
+                found.Add((name, region.Line, region.Column, line, region.Position));
         }
         foreach (var region in open)
             diagnostics.Add(new(path, region.Line + 1, region.Column, "GMAC0402", "#region without a matching #endregion"));
 
-        var bodies = points.Select(p => (Start: text.Lines[p.RegionLine].End, End: text.Lines[p.EndRegionLine].Start)).ToList();
-        var identifiers = root.DescendantTokens()
-            .Where(t => t.IsKind(SyntaxKind.IdentifierToken) && !bodies.Any(b => t.SpanStart >= b.Start && t.SpanStart < b.End))
-            .Select(t => t.ValueText)
-            .ToHashSet(StringComparer.Ordinal);
+        var bodies = found.Select(r => (Start: text.Lines[r.Line].End, End: text.Lines[r.EndLine].Start)).ToList();
+        var scopes = new RegionScopes(root, bodies);
+        var points = found.Select(r => ReadPoint(path, lines, r.Macro, r.Line, r.Column, r.EndLine, scopes.Of(r.Position), diagnostics)).ToList();
+        var bindNames = points.SelectMany(p => p.Bindings).SelectMany(b => BoundIdentifiers(b.Spec)).ToHashSet(StringComparer.Ordinal);
         diagnostics.Sort((a, b) => a.Line != b.Line ? a.Line.CompareTo(b.Line) : a.Column.CompareTo(b.Column));
-        return new BindingPointFile(source, lines, points, diagnostics, identifiers);
+        return new BindingPointFile(source, lines, points, diagnostics, bindNames);
+    }
+
+    /// <summary>Every identifier in the C# text of a binding (templates included): names the generated code reads or writes.</summary>
+    private static IEnumerable<string> BoundIdentifiers(BindingSpec spec)
+    {
+        var text = spec switch
+        {
+            CoefficientBindingSpec c => c.Value,
+            ClassBindingSpec c => c.Target,
+            AssumptionSpec a => a.Expression,
+            _ => "",
+        };
+        return SyntaxFactory.ParseTokens(text).Where(t => t.IsKind(SyntaxKind.IdentifierToken)).Select(t => t.ValueText);
     }
 
     /// <summary>
@@ -87,7 +101,8 @@ internal static partial class BindingPointReader
     private static List<string> SplitLines(Microsoft.CodeAnalysis.Text.SourceText text) =>
         text.Lines.Select(l => text.ToString(l.SpanIncludingLineBreak)).ToList();
 
-    private static BindingPoint ReadPoint(string path, IReadOnlyList<string> lines, string macro, int regionLine, int endLine, List<BindingDiagnostic> diagnostics)
+    private static BindingPoint ReadPoint(string path, IReadOnlyList<string> lines, string macro, int regionLine, int regionColumn, int endLine,
+        RegionScope scope, List<BindingDiagnostic> diagnostics)
     {
         var indent = LeadingWhiteSpace(lines[regionLine]);
         var bindings = new List<BindingLine>();
@@ -100,7 +115,7 @@ internal static partial class BindingPointReader
             if (ReadLine(trimmed[2..], i + 1, column, out var error) is { } binding) bindings.Add(binding);
             else diagnostics.Add(new(path, i + 1, column, "GMAC0404", error!));
         }
-        return new BindingPoint(macro, regionLine, endLine, indent, bindings);
+        return new BindingPoint(macro, regionLine, endLine, indent, bindings, regionColumn, scope);
     }
 
     /// <summary>Reads <c>GMac.Bind(…);</c>, <c>GMac.AssumeMin(…);</c> or <c>GMac.AssumeMax(…);</c>.</summary>
@@ -136,11 +151,8 @@ internal static partial class BindingPointReader
                     return null;
                 }
                 var value = StringValue(args[1]);
-                var isTemplate = value is not null;
                 var text = value ?? args[1].Expression.ToString();
-                var target = isTemplate ? TemplateTarget(text) : text;
-                var spec = new CoefficientBindingSpec(name[..dot].Trim(), name[(dot + 1)..].Trim(), text, isTemplate, line, column);
-                return new BindingLine(spec, target is not null && IsAssignable(target), text);
+                return new BindingLine(new CoefficientBindingSpec(name[..dot].Trim(), name[(dot + 1)..].Trim(), text, value is not null, line, column));
             }
             case "Bind" when args.Count == 3:
             {
@@ -152,8 +164,7 @@ internal static partial class BindingPointReader
                     return null;
                 }
                 var target = StringValue(args[2]) ?? args[2].Expression.ToString();
-                var spec = new ClassBindingSpec(parameter.Trim(), binding.Trim(), target, line, column);
-                return new BindingLine(spec, IsAssignable(target), target);
+                return new BindingLine(new ClassBindingSpec(parameter.Trim(), binding.Trim(), target, line, column));
             }
             case "Bind":
                 error = $"GMac.Bind takes 2 or 3 arguments, not {args.Count}";
@@ -167,8 +178,7 @@ internal static partial class BindingPointReader
                     error = $"the bound '{boundText}' of GMac.{member.Name.Identifier.ValueText} is not a number";
                     return null;
                 }
-                var spec = new AssumptionSpec(subject, bound, member.Name.Identifier.ValueText == "AssumeMin", line, column);
-                return new BindingLine(spec, false, subject);
+                return new BindingLine(new AssumptionSpec(subject, bound, member.Name.Identifier.ValueText == "AssumeMin", line, column));
             }
             case "AssumeMin" or "AssumeMax":
                 error = $"GMac.{member.Name.Identifier.ValueText} takes 2 arguments (expression, bound), not {args.Count}";
@@ -181,23 +191,6 @@ internal static partial class BindingPointReader
 
     private static string? StringValue(ArgumentSyntax argument) =>
         argument.Expression is LiteralExpressionSyntax literal && literal.IsKind(SyntaxKind.StringLiteralExpression) ? literal.Token.ValueText : null;
-
-    /// <summary>"&lt;wx&gt;" → "wx"; anything else is no target.</summary>
-    private static string? TemplateTarget(string text)
-    {
-        text = text.Trim();
-        return text.Length > 2 && text[0] == '<' && text[^1] == '>' && text.IndexOf('<', 1) < 0 ? text[1..^1].Trim() : null;
-    }
-
-    /// <summary>A variable, field, property or element: something C# lets the generated code assign to.</summary>
-    public static bool IsAssignable(string text)
-    {
-        var expression = SyntaxFactory.ParseExpression(text);
-        if (expression.ContainsDiagnostics) return false;
-        while (expression is ParenthesizedExpressionSyntax p) expression = p.Expression;
-        return expression is IdentifierNameSyntax or ElementAccessExpressionSyntax
-            || expression is MemberAccessExpressionSyntax m && m.IsKind(SyntaxKind.SimpleMemberAccessExpression) || expression.IsKind(SyntaxKind.PointerMemberAccessExpression);
-    }
 
     private static string LeadingWhiteSpace(string line)
     {

@@ -53,7 +53,7 @@ internal sealed class ShowCommand : ICommand
         // Default bindings get line 0 so their errors are not blamed on a --bind option.
         if (specs.Count == 0 || specs.All(s => s is AssumptionSpec))
             specs.InsertRange(0, context.Generator.DefaultBindings(macro).Select(d => d with { Line = 0 }));
-        var outcome = context.Generator.Generate(macro, specs, 0);
+        var outcome = BindingTextCheck.Generate(context, macro, specs, 0);
         if (!outcome.Succeeded)
         {
             foreach (var e in outcome.Errors)

@@ -7,7 +7,7 @@ namespace GMac.Cli.Commands;
 
 /// <summary>
 /// <c>gmac verify [PATH…] --dsl DIR [--seed N] [--cache DIR]</c>: compiles the code of every binding
-/// point in memory and compares it with the numeric engine on random inputs.
+/// point inside its file and project, and compares it with the numeric engine on random inputs.
 /// </summary>
 internal sealed class VerifyCommand : ICommand
 {
@@ -39,6 +39,8 @@ internal sealed class VerifyCommand : ICommand
         var (files, missing) = SourceScanner.Find(paths);
         foreach (var m in missing) error.WriteLine(m);
         var failures = missing.Count;
+        var found = 0;
+        var generations = new List<FileGeneration>();
         var regions = new List<(string Path, GeneratedRegion Region)>();
         foreach (var path in files)
         {
@@ -48,9 +50,26 @@ internal sealed class VerifyCommand : ICommand
                 failures++;
                 continue;
             }
+            found += generation.File.Points.Count;
             foreach (var d in generation.Diagnostics) error.WriteLine(d);
             failures += generation.Diagnostics.Count;
-            regions.AddRange(generation.Regions.Where(r => r.Outcome is { Succeeded: true, Plan: not null }).Select(r => (path, r)));
+            var generated = generation.Regions.Where(r => r.Outcome is { Succeeded: true, Plan: not null } && r.Code is not null).ToList();
+            if (generated.Count > 0) generations.Add(generation);
+            regions.AddRange(generated.Select(r => (path, r)));
+        }
+        if (found == 0)
+        {
+            error.WriteLine($"gmac verify: no binding points found under {string.Join(", ", paths)}; nothing was verified");
+            return ExitCodes.Diagnostics;
+        }
+
+        // The code must build where it is written, not only on its own.
+        var notCompiling = new HashSet<GeneratedRegion>(ReferenceEqualityComparer.Instance);
+        foreach (var failure in ProjectContextCompiler.Check(generations))
+        {
+            error.WriteLine(failure.Diagnostic);
+            notCompiling.Add(failure.Region);
+            failures++;
         }
 
         var remapped = regions.Select(r => KernelCompiler.Remap(r.Region.Outcome!.Result!.Block, r.Region.Outcome.Plan!.InputTexts.Keys)).ToList();
@@ -63,7 +82,7 @@ internal sealed class VerifyCommand : ICommand
             var (kernel, compileError) = kernels[k];
             if (kernel is null)
             {
-                error.WriteLine(new BindingDiagnostic(path, point.RegionLineNumber, 1, "GMAC0421", $"the code of '{point.MacroName}' does not compile: {compileError}"));
+                error.WriteLine(new BindingDiagnostic(path, point.RegionLineNumber, point.RegionColumn, "GMAC0421", $"the code of '{point.MacroName}' does not compile: {compileError}"));
                 failures++;
                 continue;
             }
@@ -74,13 +93,14 @@ internal sealed class VerifyCommand : ICommand
             var result = RegionVerifier.Verify(kernel, plan, assumptions, normalized, tolerance, seed + k);
             if (!result.Passed)
             {
-                error.WriteLine(new BindingDiagnostic(path, point.RegionLineNumber, 1, "GMAC0420", $"'{point.MacroName}' disagrees with the numeric engine: {result.Failure}"));
+                error.WriteLine(new BindingDiagnostic(path, point.RegionLineNumber, point.RegionColumn, "GMAC0420", $"'{point.MacroName}' disagrees with the numeric engine: {result.Failure}"));
                 failures++;
                 continue;
             }
+            if (notCompiling.Contains(region)) continue;
             passed++;
             output.WriteLine(string.Create(CultureInfo.InvariantCulture,
-                $"{path}({point.RegionLineNumber},1): ok {point.MacroName}: {kernel.Outputs.Count} output(s), {result.Samples} samples, max relative error {result.MaxRelativeError:0.0e+00} (tolerance {result.Tolerance:0e+00})"));
+                $"{path}({point.RegionLineNumber},{point.RegionColumn}): ok {point.MacroName}: {kernel.Outputs.Count} output(s), {result.Samples} samples, max relative error {result.MaxRelativeError:0.0e+00} (tolerance {result.Tolerance:0e+00})"));
         }
         output.WriteLine($"gmac verify: {regions.Count} region(s), {passed} passed, {failures} problem(s)");
         return failures > 0 ? ExitCodes.Diagnostics : ExitCodes.Success;

@@ -6,14 +6,19 @@ namespace GMac.Core.CodeGeneration;
 /// <summary>Prints a code block as C# statements.</summary>
 public static partial class CSharpEmitter
 {
-    private static readonly string[] TemporaryPrefixes = ["tmp", "gmacTmp", "gmacTemp", "__gmacTmp"];
+    /// <summary>Preferred prefixes of temporary names; numbered ones follow when all of these clash.</summary>
+    private static readonly string[] TemporaryPrefixes = ["tmp", "t", "tmpA", "tmpB", "tmpC", "gmacTmp"];
 
     public static string Emit(CodeBlock block, CSharpEmitOptions? options = null)
     {
         options ??= new CSharpEmitOptions();
         var temps = block.Temporaries.Select(t => t.Target).Distinct().ToList();
-        var prefix = TemporaryPrefixes.FirstOrDefault(p => Enumerable.Range(0, temps.Count).All(i => !options.IsNameTaken($"{p}{i}")))
-            ?? throw new InvalidOperationException("Every temporary-name prefix clashes with a name in scope.");
+        // The block's own C# text (bound inputs and output targets) names things the temporaries must not hide.
+        var bound = block.InputText.Values.Concat(block.OutputTargets.Values)
+            .SelectMany(text => IdentifierLike().Matches(text).Select(m => m.Value.TrimStart('@')))
+            .ToHashSet(StringComparer.Ordinal);
+        bool IsFree(string name) => !bound.Contains(name) && !options.IsNameTaken(name);
+        var prefix = CandidatePrefixes().First(p => Enumerable.Range(0, temps.Count).All(i => IsFree($"{p}{i}")));
         var tempName = temps.Select((t, i) => (t, i)).ToDictionary(x => x.t, x => $"{prefix}{x.i}", StringComparer.Ordinal);
 
         string VariableText(string name) =>
@@ -49,6 +54,17 @@ public static partial class CSharpEmitter
         return sb.ToString();
     }
 
+    /// <summary>
+    /// The preferred prefixes, then <c>tmp_1_</c>, <c>tmp_2_</c>, …: each taken name rules out at most
+    /// one of those, so a free one always comes within as many tries as there are taken names.
+    /// </summary>
+    private static IEnumerable<string> CandidatePrefixes()
+    {
+        foreach (var prefix in TemporaryPrefixes) yield return prefix;
+        for (var k = 1; k < int.MaxValue; k++) yield return $"tmp_{k}_";
+        throw new InvalidOperationException("No free name for temporaries.");
+    }
+
     private static string CSharpFunction(string f) => f switch
     {
         "sin" => "Math.Sin",
@@ -65,6 +81,9 @@ public static partial class CSharpEmitter
 
     /// <summary>An identifier, member access, element access or number: safe to use without parentheses.</summary>
     private static bool IsSimple(string text) => SimpleExpression().IsMatch(text.Trim());
+
+    [GeneratedRegex(@"@?[A-Za-z_][A-Za-z0-9_]*")]
+    private static partial Regex IdentifierLike();
 
     [GeneratedRegex(@"^(@?[A-Za-z_][A-Za-z0-9_]*(\s*\.\s*@?[A-Za-z_][A-Za-z0-9_]*|\s*\[[^\[\]]*\])*|[0-9]+(\.[0-9]+)?([eE][+-]?[0-9]+)?[dD]?)$")]
     private static partial Regex SimpleExpression();

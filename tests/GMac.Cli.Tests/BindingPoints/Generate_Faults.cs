@@ -84,7 +84,7 @@ public sealed class Generate_Faults : IDisposable
                     #endregion
             """));
         Assert.Equal(1, exit);
-        Assert.Matches(@"Faulty\.cs\(12,1\): error GMAC0301: unknown macro 'NormalToVektors'; did you mean 'NormalToVectors'\?", err);
+        Assert.Matches(@"Faulty\.cs\(12,9\): error GMAC0301: unknown macro 'NormalToVektors'; did you mean 'NormalToVectors'\?", err);
     }
 
     [Theory]

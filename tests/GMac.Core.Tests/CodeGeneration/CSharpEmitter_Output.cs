@@ -16,7 +16,7 @@ public class CSharpEmitter_Output
             new AssignmentStatement("x", Sum(Variable("a"), Variable("b")), false),
             new AssignmentStatement("o", Product(Variable("x"), Variable("x")), true));
         var code = CSharpEmitter.Emit(block, new CSharpEmitOptions { IsNameTaken = n => n == "tmp0", Indent = "    " });
-        Assert.Equal("    double gmacTmp0 = a + b;\n    oTarget = gmacTmp0 * gmacTmp0;\n", code);
+        Assert.Equal("    double t0 = a + b;\n    oTarget = t0 * t0;\n", code);
     }
 
     [Fact]

@@ -1,0 +1,6 @@
+using GMac.Cli.BindingPoints;
+
+namespace GMac.Cli.Verification;
+
+/// <summary>A region whose code does not compile where it is written, with the first compiler error inside it.</summary>
+internal sealed record RegionCompileFailure(GeneratedRegion Region, BindingDiagnostic Diagnostic);
