@@ -1,6 +1,6 @@
 using System.Diagnostics;
 using GMac.Dsl.Diagnostics;
-using GMac.Dsl.Files;
+using SafeFiles;
 using GMac.Dsl.Semantics;
 using GMac.Dsl.Syntax;
 

@@ -1,5 +1,5 @@
 using System.Diagnostics;
-using GMac.Dsl.Files;
+using SafeFiles;
 
 namespace GMac.Dsl;
 

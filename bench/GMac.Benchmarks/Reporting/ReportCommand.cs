@@ -3,6 +3,7 @@ using GMac.Benchmarks.Generation;
 using GMac.Benchmarks.Kernels;
 using GMac.Dsl;
 using GMac.Dsl.Generation;
+using SafeFiles;
 
 namespace GMac.Benchmarks.Reporting;
 
@@ -87,15 +88,8 @@ public static class ReportCommand
         var png = BarChart.Render(timings);
 
         Directory.CreateDirectory(options.OutputDirectory);
-        WriteAtomically(Path.Combine(options.OutputDirectory, ChartFile), png);
-        WriteAtomically(Path.Combine(options.OutputDirectory, MarkdownFile), System.Text.Encoding.UTF8.GetBytes(markdown));
+        AtomicFile.Write(Path.Combine(options.OutputDirectory, ChartFile), png);
+        AtomicFile.Write(Path.Combine(options.OutputDirectory, MarkdownFile), System.Text.Encoding.UTF8.GetBytes(markdown));
         log.WriteLine($"report: wrote {Path.Combine(options.OutputDirectory, MarkdownFile)} and {ChartFile}");
-    }
-
-    private static void WriteAtomically(string path, byte[] bytes)
-    {
-        var temp = path + ".tmp";
-        File.WriteAllBytes(temp, bytes);
-        File.Move(temp, path, overwrite: true);
     }
 }

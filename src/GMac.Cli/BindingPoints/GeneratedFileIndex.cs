@@ -1,5 +1,6 @@
 using System.Security.Cryptography;
 using System.Text;
+using SafeFiles;
 
 namespace GMac.Cli.BindingPoints;
 
@@ -56,7 +57,7 @@ internal sealed class GeneratedFileIndex
         try
         {
             Directory.CreateDirectory(Path.GetDirectoryName(_path)!);
-            SafeFileWriter.Replace(_path, Encoding.UTF8.GetBytes(text.ToString()));
+            AtomicFile.TryWrite(_path, Encoding.UTF8.GetBytes(text.ToString()));
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {

@@ -1,4 +1,4 @@
-using GMac.Dsl.Files;
+using SafeFiles;
 
 namespace GMac.Cli.BindingPoints;
 

@@ -2,6 +2,7 @@ using System.Diagnostics;
 using System.Globalization;
 using System.Text;
 using GMac.Cli.BindingPoints;
+using SafeFiles;
 
 namespace GMac.Cli.Commands;
 
@@ -99,7 +100,7 @@ internal sealed class GenerateCommand : ICommand
                 failed++;
                 continue;
             }
-            if (SafeFileWriter.Replace(path, newBytes) is { } why)
+            if (AtomicFile.TryWrite(path, newBytes) is { } why)
             {
                 error.WriteLine(new BindingDiagnostic(path, generation.File.Points[0].RegionLineNumber, 1, "GMAC0406", $"cannot write the generated code: {why}; the file is unchanged"));
                 failed++;

@@ -1,7 +1,7 @@
 using System.Runtime.Versioning;
 using GMac.Cli.BindingPoints;
 using GMac.Cli.Tests.Support;
-using GMac.Dsl.Files;
+using SafeFiles;
 
 namespace GMac.Cli.Tests.BindingPoints;
 
@@ -37,7 +37,7 @@ public sealed class Generate_FileSafety : IDisposable
         Assert.True(exit == 0, err);
         Assert.Equal(Path.GetRelativePath(Code, target), new FileInfo(link).LinkTarget);
         AssertGenerated(target);
-        Assert.Empty(Directory.GetFiles(_temp.Path, "*" + SafeFileWriter.TempSuffix, SearchOption.AllDirectories));
+        Assert.Empty(Directory.GetFiles(_temp.Path, ".*" + AtomicFile.TempSuffix, SearchOption.AllDirectories));
     }
 
     [UnsupportedOSPlatform("windows")]
@@ -96,14 +96,18 @@ public sealed class Generate_FileSafety : IDisposable
     }
 
     [Fact]
-    public void A_temporary_file_left_by_a_killed_run_with_our_process_id_does_not_block_writing()
+    public void Temporary_files_left_by_a_killed_run_are_removed_and_user_files_are_not()
     {
         var path = _temp.Write("code/Normals.cs", StaleKernel.Text);
-        // what an interrupted run of the same process id (say, pid 1 in a container) left behind
-        var leftOver = _temp.Write($"code/.Normals.cs.{Environment.ProcessId}{SafeFileWriter.TempSuffix}", "half of a file");
+        // what an interrupted run left behind a day ago
+        var leftOver = _temp.Write($"code/.Normals.cs.00112233aabb{AtomicFile.TempSuffix}", "half of a file");
         File.SetLastWriteTimeUtc(leftOver, DateTime.UtcNow.AddDays(-1));
         // one that a concurrent run may still be writing
-        var recent = _temp.Write($"code/.Normals.cs.0123456789ab{SafeFileWriter.TempSuffix}", "being written");
+        var recent = _temp.Write($"code/.Normals.cs.0123456789ab{AtomicFile.TempSuffix}", "being written");
+        // old files of the user's that merely look similar
+        var users = new[] { $"code/.Normals.cs.backup{AtomicFile.TempSuffix}", $"code/.Normals.cs.{Environment.ProcessId}{AtomicFile.TempSuffix}", "code/Normals.cs.tmp" }
+            .Select(name => _temp.Write(name, "the user's")).ToArray();
+        foreach (var file in users) File.SetLastWriteTimeUtc(file, DateTime.UtcNow.AddDays(-1));
 
         var (exit, _, err) = Tool.Generate([Code]);
 
@@ -111,5 +115,6 @@ public sealed class Generate_FileSafety : IDisposable
         AssertGenerated(path);
         Assert.False(File.Exists(leftOver));
         Assert.True(File.Exists(recent));
+        Assert.All(users, file => Assert.Equal("the user's", File.ReadAllText(file)));
     }
 }

@@ -2,6 +2,7 @@ using System.Buffers.Binary;
 using System.Globalization;
 using System.Text;
 using RayTracer.Util;
+using SafeFiles;
 
 namespace RayTracer.Geometry.Meshes;
 

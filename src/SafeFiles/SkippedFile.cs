@@ -1,4 +1,4 @@
-namespace GMac.Dsl.Files;
+namespace SafeFiles;
 
 /// <summary>
 /// An entry a folder walk left out, and why: a special file (a warning: it holds no source) or a

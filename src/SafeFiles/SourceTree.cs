@@ -1,4 +1,4 @@
-namespace GMac.Dsl.Files;
+namespace SafeFiles;
 
 /// <summary>
 /// The files matching a pattern under a folder, for tools that read them all: only regular files

@@ -1,18 +1,18 @@
 using System.Runtime.InteropServices;
 using System.Security.Cryptography;
-using GMac.Dsl.Files;
 
-namespace GMac.Cli.BindingPoints;
+namespace SafeFiles;
 
 /// <summary>
-/// Replaces a file's content through a temporary file in the same folder and an atomic rename,
-/// so a crash or a full disk leaves either the old file or the new one, never half of one. The
-/// new file keeps the old one's permissions and, where the system allows, its owner; a symbolic
-/// link stays a link and its target gets the content.
+/// Replaces a file's content through a temporary sibling and an atomic rename, so a crash, a full
+/// disk or an interrupt leaves either the old file or the new one, never half of one. A replaced
+/// file keeps its permissions and, where the system allows, its owner; a symbolic link stays a link
+/// and its target gets the content. Temporary names are hidden and random (<c>.NAME.RANDOM.tmp</c>),
+/// so they never collide with a user's file or with another run's.
 /// </summary>
-internal static class SafeFileWriter
+public static class AtomicFile
 {
-    public const string TempSuffix = ".gmac-tmp";
+    public const string TempSuffix = ".tmp";
 
     /// <summary>Temporary files older than this are left-overs of a killed run, not of one still writing.</summary>
     private static readonly TimeSpan StaleAge = TimeSpan.FromHours(1);
@@ -23,46 +23,65 @@ internal static class SafeFileWriter
     private static bool _terminating;
     private static readonly List<PosixSignalRegistration> Signals = RegisterSignals();
 
-    /// <summary>Writes <paramref name="bytes"/>; returns null on success, else why it could not.</summary>
-    public static string? Replace(string path, byte[] bytes)
+    /// <summary>Writes <paramref name="contents"/> to <paramref name="path"/>.</summary>
+    /// <exception cref="IOException">The file could not be written; it is left as it was.</exception>
+    /// <exception cref="UnauthorizedAccessException">The system refused the write; the file is left as it was.</exception>
+    public static void Write(string path, ReadOnlySpan<byte> contents)
     {
+        var copy = contents.ToArray();
+        Write(path, stream => stream.Write(copy));
+    }
+
+    /// <summary>Writes what <paramref name="write"/> puts in the stream; if it throws, the file is left as it was.</summary>
+    public static void Write(string path, Action<Stream> write)
+    {
+        ArgumentNullException.ThrowIfNull(write);
         lock (Gate)
         {
             // the process is about to end: start nothing it could leave half done
-            if (_terminating) return "the run was interrupted";
-            string target;
-            try
-            {
-                target = FinalTarget(path);
-            }
-            catch (IOException e)
-            {
-                return e.Message;
-            }
+            if (_terminating) throw new IOException("the run was interrupted");
+            var target = FinalTarget(path);
             var exists = File.Exists(target);
-            if (exists && WhyNotWritable(target) is { } refused) return refused;
+            if (exists) ThrowIfNotWritable(target);
             RemoveStaleTemps(target);
-            string? temp = null;
+            var temp = CreateTemp(target, privateUntilRenamed: exists);
             try
             {
-                temp = CreateTemp(target, bytes);
+                using (var stream = new FileStream(temp, FileMode.Open, FileAccess.Write, FileShare.None, 1 << 16))
+                {
+                    write(stream);
+                    stream.Flush(flushToDisk: true);
+                }
                 if (exists && !OperatingSystem.IsWindows()) CopyOwnerAndMode(target, temp);
                 File.Move(temp, target, overwrite: true);
                 Pending.Remove(temp);
-                return null;
             }
-            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+            catch
             {
-                if (temp is not null) Abandon(temp);
-                return e.Message;
+                Abandon(temp);
+                throw;
             }
+        }
+    }
+
+    /// <summary>Writes <paramref name="bytes"/>; returns null on success, else why it could not (the file is then unchanged).</summary>
+    public static string? TryWrite(string path, ReadOnlySpan<byte> bytes)
+    {
+        try
+        {
+            Write(path, bytes);
+            return null;
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            return e.Message;
         }
     }
 
     /// <summary>The file a path finally names: the end of its chain of symbolic links, or the path itself.</summary>
     private static string FinalTarget(string path)
     {
-        var info = new FileInfo(path);
+        var info = new FileInfo(Path.GetFullPath(path));
         if (info.LinkTarget is null) return info.FullName;
         return info.ResolveLinkTarget(returnFinalTarget: true)?.FullName ?? info.FullName;
     }
@@ -71,50 +90,46 @@ internal static class SafeFileWriter
     /// Asks the system whether the file may be written by opening it for writing (nothing is
     /// written): permission bits alone do not say, since root may write any file.
     /// </summary>
-    private static string? WhyNotWritable(string target)
+    private static void ThrowIfNotWritable(string target)
     {
         try
         {
             using var probe = File.OpenHandle(target, FileMode.Open, FileAccess.Write, FileShare.ReadWrite);
-            return null;
         }
-        catch (UnauthorizedAccessException)
+        catch (UnauthorizedAccessException e)
         {
-            return "the file is read-only (permission denied)";
+            throw new UnauthorizedAccessException($"the file '{target}' is read-only (permission denied)", e);
         }
         catch (IOException)
         {
             // held open elsewhere, say: the rename decides
-            return null;
         }
     }
 
-    private static string CreateTemp(string target, byte[] bytes)
+    /// <summary>
+    /// Creates an empty, uniquely named temporary sibling. When it will replace an existing file it
+    /// is readable by its owner only until it takes that file's own permissions; a new file gets the
+    /// system's default permissions, as any newly created file would.
+    /// </summary>
+    private static string CreateTemp(string target, bool privateUntilRenamed)
     {
-        var folder = Path.GetDirectoryName(target)!;
+        var folder = Path.GetDirectoryName(target) ?? throw new IOException($"'{target}' names no file");
         var name = Path.GetFileName(target);
         for (var attempt = 0; ; attempt++)
         {
             // random, not the process id: a pid repeats across runs (in a container, every run is pid 1)
             var temp = Path.Join(folder, $".{name}.{Convert.ToHexStringLower(RandomNumberGenerator.GetBytes(6))}{TempSuffix}");
             var options = new FileStreamOptions { Mode = FileMode.CreateNew, Access = FileAccess.Write, Share = FileShare.None };
-            // only the owner may read it until it gets the target's own permissions
-            if (!OperatingSystem.IsWindows()) options.UnixCreateMode = UnixFileMode.UserRead | UnixFileMode.UserWrite;
-            FileStream stream;
+            if (privateUntilRenamed && !OperatingSystem.IsWindows()) options.UnixCreateMode = UnixFileMode.UserRead | UnixFileMode.UserWrite;
             try
             {
-                stream = new FileStream(temp, options);
+                new FileStream(temp, options).Dispose();
             }
             catch (IOException) when (attempt < 3 && File.Exists(temp))
             {
                 continue;
             }
             Pending.Add(temp);
-            using (stream)
-            {
-                stream.Write(bytes);
-                stream.Flush(flushToDisk: true);
-            }
             return temp;
         }
     }
@@ -141,16 +156,16 @@ internal static class SafeFileWriter
         }
     }
 
-    /// <summary>Deletes this tool's temporary files for <paramref name="target"/> that a killed run left behind.</summary>
+    /// <summary>Deletes temporary files of this writer for <paramref name="target"/> that a killed run left behind.</summary>
     private static void RemoveStaleTemps(string target)
     {
         var folder = Path.GetDirectoryName(target)!;
         var prefix = $".{Path.GetFileName(target)}.";
         try
         {
-            foreach (var file in new DirectoryInfo(folder).EnumerateFiles($"*{TempSuffix}"))
+            foreach (var file in new DirectoryInfo(folder).EnumerateFiles($".*{TempSuffix}"))
             {
-                if (!file.Name.StartsWith(prefix, StringComparison.Ordinal) || Pending.Contains(file.FullName)) continue;
+                if (!IsOurTemp(file.Name, prefix) || Pending.Contains(file.FullName)) continue;
                 if (DateTime.UtcNow - file.LastWriteTimeUtc > StaleAge) file.Delete();
             }
         }
@@ -158,6 +173,14 @@ internal static class SafeFileWriter
         {
             // only tidying
         }
+    }
+
+    /// <summary>Exactly the names <see cref="CreateTemp"/> makes: the prefix, twelve lower-case hex digits, the suffix.</summary>
+    private static bool IsOurTemp(string name, string prefix)
+    {
+        if (!name.StartsWith(prefix, StringComparison.Ordinal) || !name.EndsWith(TempSuffix, StringComparison.Ordinal)) return false;
+        var random = name.AsSpan(prefix.Length, name.Length - prefix.Length - TempSuffix.Length);
+        return random.Length == 12 && !random.ContainsAnyExcept("0123456789abcdef");
     }
 
     /// <summary>On an interrupt or a termination request, deletes the temporary files in flight before the process ends.</summary>

@@ -1,6 +1,6 @@
 using System.Runtime.InteropServices;
 
-namespace GMac.Dsl.Files;
+namespace SafeFiles;
 
 /// <summary>
 /// The file type and owner of a path, which .NET does not expose: <c>statx</c> on Linux (one

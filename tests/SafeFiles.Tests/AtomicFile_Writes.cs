@@ -1,6 +1,4 @@
-using RayTracer.Util;
-
-namespace RayTracer.Tests.Util;
+namespace SafeFiles.Tests;
 
 public sealed class AtomicFile_Writes : IDisposable
 {
@@ -62,5 +60,58 @@ public sealed class AtomicFile_Writes : IDisposable
 
         Assert.Equal("old", File.ReadAllText(target));
         Assert.Equal(["mesh.ply"], Names());
+    }
+
+    [Fact]
+    public void A_new_file_gets_the_permissions_any_new_file_gets()
+    {
+        if (OperatingSystem.IsWindows()) return;
+        var plain = Path.Combine(_dir, "plain.bin");
+        File.WriteAllBytes(plain, [1]);
+        var written = Path.Combine(_dir, "written.bin");
+
+        AtomicFile.Write(written, [1]);
+
+        Assert.Equal(File.GetUnixFileMode(plain), File.GetUnixFileMode(written));
+    }
+
+    [Theory]
+    [InlineData(UnixFileMode.UserRead | UnixFileMode.UserWrite)]
+    [InlineData(UnixFileMode.UserRead | UnixFileMode.UserWrite | UnixFileMode.UserExecute | UnixFileMode.GroupRead | UnixFileMode.GroupExecute | UnixFileMode.OtherRead | UnixFileMode.OtherExecute)]
+    public void A_replaced_file_keeps_its_permissions(UnixFileMode mode)
+    {
+        if (OperatingSystem.IsWindows()) return;
+        var target = Path.Combine(_dir, "script.sh");
+        File.WriteAllText(target, "old");
+        File.SetUnixFileMode(target, mode);
+
+        AtomicFile.Write(target, "new"u8);
+
+        Assert.Equal("new", File.ReadAllText(target));
+        Assert.Equal(mode, File.GetUnixFileMode(target));
+    }
+
+    [Fact]
+    public void A_symbolic_link_stays_a_link_and_its_target_gets_the_content()
+    {
+        var target = Path.Combine(_dir, "real.txt");
+        File.WriteAllText(target, "old");
+        var link = Path.Combine(_dir, "link.txt");
+        File.CreateSymbolicLink(link, target);
+
+        AtomicFile.Write(link, "new"u8);
+
+        Assert.Equal(target, new FileInfo(link).LinkTarget);
+        Assert.Equal("new", File.ReadAllText(target));
+        Assert.Equal(["link.txt", "real.txt"], Names());
+    }
+
+    [Fact]
+    public void TryWrite_says_why_it_could_not_write_and_creates_nothing()
+    {
+        var missingFolder = Path.Combine(_dir, "no", "such", "folder", "out.png");
+        var why = AtomicFile.TryWrite(missingFolder, [1, 2, 3]);
+        Assert.NotNull(why);
+        Assert.Empty(Names());
     }
 }

@@ -1,4 +1,4 @@
-namespace GMac.Dsl.Files;
+namespace SafeFiles;
 
 /// <summary>What a path names, after following symbolic links.</summary>
 public enum FileKind

@@ -1,4 +1,4 @@
-namespace GMac.Dsl.Files;
+namespace SafeFiles;
 
 /// <summary>
 /// The canonical form of a path: absolute, with every symbolic link along it resolved, so two
