@@ -67,7 +67,9 @@ internal static class BindingPointGenerator
             return new GeneratedRegion(point, null, null);
         }
         foreach (var e in outcome.Errors)
-            diagnostics.Add(new(file.Path, e.Line, e.Column, e.Code, e.Message));
+            diagnostics.Add(e.Source is { } at
+                ? new(at.FilePath, at.Line, at.Column, e.Code, $"{e.Message} (binding point at {file.Path}({e.Line},{e.Column}))")
+                : new(file.Path, e.Line, e.Column, e.Code, e.Message));
         if (!outcome.Succeeded) return new GeneratedRegion(point, outcome, null);
         try
         {
