@@ -52,7 +52,9 @@ internal static class BindingPointGenerator
         }
         // Errors about the region as a whole come at its line, column 1: point at the #region itself.
         foreach (var e in outcome.Errors)
-            diagnostics.Add(new(file.Path, e.Line, e.Line == point.RegionLineNumber && e.Column == 1 ? point.RegionColumn : e.Column, e.Code, e.Message));
+            diagnostics.Add(e.Source is { } at
+                ? new(at.FilePath, at.Line, at.Column, e.Code, $"{e.Message} (binding point at {file.Path}({e.Line},{e.Column}))")
+                : new(file.Path, e.Line, e.Line == point.RegionLineNumber && e.Column == 1 ? point.RegionColumn : e.Column, e.Code, e.Message));
         if (!outcome.Succeeded) return new GeneratedRegion(point, outcome, null);
         try
         {

@@ -53,13 +53,27 @@ internal sealed class ShowCommand : ICommand
         // Default bindings get line 0 so their errors are not blamed on a --bind option.
         if (specs.Count == 0 || specs.All(s => s is AssumptionSpec))
             specs.InsertRange(0, context.Generator.DefaultBindings(macro).Select(d => d with { Line = 0 }));
-        var outcome = BindingTextCheck.Generate(context, macro, specs, 0);
+        // Every problem is printed at a DSL position: the cause's when known, else the macro's
+        // declaration (or the DSL folder for an unknown macro); --bind options are quoted.
+        var macroAt = context.Project.Model.Macros.TryGetValue(macro, out var symbol)
+            ? symbol.Declaration
+            : Dsl.Diagnostics.SourceSpan.None(options.Dsl!);
+        GenerationOutcome outcome;
+        try
+        {
+            outcome = BindingTextCheck.Generate(context, macro, specs, 0);
+        }
+        catch (Exception e) when (e is not OutOfMemoryException)
+        {
+            error.WriteLine(Diagnostic(macroAt, "GMAC0409", $"internal error while generating '{macro}': {e.GetType().Name}: {e.Message}"));
+            return ExitCodes.Diagnostics;
+        }
         if (!outcome.Succeeded)
         {
             foreach (var e in outcome.Errors)
             {
-                var where = e.Line > 0 && e.Line <= options.Values.Count ? $"{options.Values[e.Line - 1].Option} {options.Values[e.Line - 1].Value}" : $"macro {macro}";
-                error.WriteLine($"gmac show: error {e.Code}: {where}: {e.Message}");
+                var option = e.Line > 0 && e.Line <= options.Values.Count ? $"{options.Values[e.Line - 1].Option} {options.Values[e.Line - 1].Value}: " : "";
+                error.WriteLine(Diagnostic(e.Source ?? macroAt, e.Code, option + e.Message));
             }
             return ExitCodes.Diagnostics;
         }
@@ -70,6 +84,9 @@ internal sealed class ShowCommand : ICommand
         }));
         return ExitCodes.Success;
     }
+
+    private static string Diagnostic(Dsl.Diagnostics.SourceSpan at, string code, string message) =>
+        $"{at.FilePath}({at.Line},{at.Column}): error {code}: {message}";
 
     /// <summary>One <c>--bind</c>, <c>--min</c> or <c>--max</c>; the spec's line is its position among them.</summary>
     private static BindingSpec? ParseSpec(string option, string text, int index)

@@ -9,6 +9,9 @@ public sealed class AlgebraException : Exception
 {
     public string? FrameName { get; }
 
+    /// <summary>True when the operation was refused for its size rather than for its meaning.</summary>
+    public bool ExceedsLimit { get; init; }
+
     public AlgebraException(string? frameName, string message)
         : base(frameName is null ? message : $"Frame '{frameName}': {message}")
     {

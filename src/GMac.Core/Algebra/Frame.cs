@@ -23,6 +23,9 @@ public sealed class Frame
 
     internal BladeProductTable Products { get; }
 
+    /// <summary>Table-free products for orthonormal (and null) bases; null for other metrics.</summary>
+    internal SignatureProducts? SignatureProducts { get; }
+
     public Frame(string name, IReadOnlyList<string> basisVectorNames, Metric metric)
     {
         Name = name;
@@ -42,6 +45,7 @@ public sealed class Frame
         }
         Metric = metric;
         Products = new BladeProductTable(metric);
+        SignatureProducts = SignatureProducts.For(metric);
     }
 
     /// <summary>A Euclidean frame e1 … en.</summary>

@@ -4,11 +4,21 @@ namespace GMac.Core.Algebra;
 
 public sealed partial class Multivector<T>
 {
+    /// <summary>
+    /// Pairs of terms one product may multiply (two general multivectors of 11 dimensions). A
+    /// product of two dense multivectors grows as 4^n; past this it would run for minutes and
+    /// take gigabytes with symbolic coefficients, so it is refused with a message instead.
+    /// </summary>
+    public const long MaxProductPairs = 1L << 22;
+
     /// <summary>Any bilinear product of Table 3-2, term by term through the frame's product table.</summary>
     public Multivector<T> Product(ProductKind kind, Multivector<T> other)
     {
         RequireSameFrame(this, other, "multiply");
         if (IsZero || other.IsZero) return Zero(Frame);
+        if (Frame.SignatureProducts is { } signature && kind == ProductKind.Scalar) return ScalarProduct(signature, other);
+        CheckSize(other);
+        if (Frame.SignatureProducts is { } signs) return Product(signs, kind, other);
         var table = ProductTable<T>.For(Frame, kind);
         var acc = new Accumulator(Frame);
         var bIds = other._ids;
@@ -27,6 +37,59 @@ public sealed partial class Multivector<T>
             }
         }
         return acc.ToMultivector();
+    }
+
+    /// <summary>The same product in an orthonormal frame: each pair of blades gives at most one signed blade.</summary>
+    private Multivector<T> Product(SignatureProducts signature, ProductKind kind, Multivector<T> other)
+    {
+        var acc = new Accumulator(Frame);
+        var bIds = other._ids;
+        var bCs = other._coefficients;
+        for (var i = 0; i < _ids.Length; i++)
+        {
+            var a = _ids[i];
+            var ca = _coefficients[i];
+            for (var j = 0; j < bIds.Length; j++)
+            {
+                var sign = signature.Product(kind, a, bIds[j], out var blade);
+                if (sign == 0) continue;
+                var ab = ca * bCs[j];
+                acc.Add(blade, sign > 0 ? ab : -ab);
+            }
+        }
+        return acc.ToMultivector();
+    }
+
+    /// <summary>⟨AB⟩₀ in an orthonormal frame: only equal blades meet, so one merge of the sorted terms.</summary>
+    private Multivector<T> ScalarProduct(SignatureProducts signature, Multivector<T> other)
+    {
+        var sum = T.Zero;
+        var any = false;
+        for (int i = 0, j = 0; i < _ids.Length && j < other._ids.Length;)
+        {
+            if (_ids[i] < other._ids[j]) { i++; continue; }
+            if (_ids[i] > other._ids[j]) { j++; continue; }
+            var sign = signature.Product(ProductKind.Scalar, _ids[i], _ids[i], out _);
+            if (sign != 0)
+            {
+                var ab = _coefficients[i] * other._coefficients[j];
+                sum = any ? (sign > 0 ? sum + ab : sum - ab) : (sign > 0 ? ab : -ab);
+                any = true;
+            }
+            i++;
+            j++;
+        }
+        return any ? FromScalar(Frame, sum) : Zero(Frame);
+    }
+
+    private void CheckSize(Multivector<T> other)
+    {
+        var pairs = (long)_ids.Length * other._ids.Length;
+        if (pairs > MaxProductPairs)
+            throw new AlgebraException(Frame.Name,
+                $"a product of a multivector of {_ids.Length} terms and one of {other._ids.Length} terms in this {Frame.Dimension}-dimensional frame " +
+                $"needs {pairs} term products, more than the limit of {MaxProductPairs}; restrict the operands to the grades needed (e.g. with grade(A, k) or a smaller class)")
+            { ExceedsLimit = true };
     }
 
     public Multivector<T> Gp(Multivector<T> b) => Product(ProductKind.Geometric, b);

@@ -17,8 +17,16 @@ internal static class SymbolicInliner
         public bool IsOutput { get; } = isOutput;
     }
 
+    /// <summary>
+    /// Past this many assignments each trial (substitute, simplify, lower every reader) is repeated
+    /// for every pair of temporary and reader, which grows too fast for large frames; the block is
+    /// then left to the optimizer's own passes.
+    /// </summary>
+    public const int MaxAssignments = 400;
+
     public static void Inline(List<Assignment> assignments, Func<Scalar, Scalar> simplify, int maxRounds = 4)
     {
+        if (assignments.Count > MaxAssignments) return;
         var cost = new Dictionary<Scalar, int>();
         int Cost(Scalar s)
         {

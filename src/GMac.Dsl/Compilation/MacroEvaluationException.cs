@@ -2,8 +2,13 @@ using GMac.Dsl.Diagnostics;
 
 namespace GMac.Dsl.Compilation;
 
-/// <summary>A macro that binds but cannot be evaluated (e.g. the inverse of a null blade).</summary>
-public sealed class MacroEvaluationException(SourceSpan span, string message) : Exception(message)
+/// <summary>
+/// A macro that binds but cannot be evaluated (e.g. the inverse of a null blade), at the DSL
+/// statement or expression responsible. <see cref="Code"/> is set when the problem has a code of
+/// its own (division by zero, an operation too large), otherwise the generic one applies.
+/// </summary>
+public sealed class MacroEvaluationException(SourceSpan span, string message, string? code = null) : Exception(message)
 {
     public SourceSpan Span { get; } = span;
+    public string? Code { get; } = code;
 }

@@ -1,5 +1,6 @@
 using System.Numerics;
 using GMac.Core.Algebra;
+using GMac.Dsl.Diagnostics;
 using GMac.Dsl.Semantics;
 
 namespace GMac.Dsl.Compilation;
@@ -98,7 +99,11 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
             }
             catch (AlgebraException e)
             {
-                throw new MacroEvaluationException(macro.Statements[i].Span, e.Message);
+                throw new MacroEvaluationException(macro.Statements[i].Span, e.Message, e.ExceedsLimit ? GenerationCodes.TooLarge : null);
+            }
+            catch (DivideByZeroException)
+            {
+                throw new MacroEvaluationException(macro.Statements[i].Span, DivisionByZeroMessage, GenerationCodes.DivisionByZero);
             }
         }
         return env;
@@ -281,6 +286,21 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
         });
     }
 
+    /// <summary>A division, blamed on its own DSL position when the divisor is (symbolically) zero.</summary>
+    private static TResult Divide<TResult>(Func<TResult> divide, BoundBinaryOperation b)
+    {
+        try
+        {
+            return divide();
+        }
+        catch (DivideByZeroException)
+        {
+            throw new MacroEvaluationException(b.Span, DivisionByZeroMessage, GenerationCodes.DivisionByZero);
+        }
+    }
+
+    private const string DivisionByZeroMessage = "division by zero: the divisor simplifies to zero for these bindings";
+
     private Value Binary(BoundBinaryOperation b, Context context, Frame? frame)
     {
         if (frame is null)
@@ -290,7 +310,7 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
             {
                 BinaryOperator.Add => x + y,
                 BinaryOperator.Subtract => x - y,
-                BinaryOperator.Divide => x / y,
+                BinaryOperator.Divide => Divide(() => x / y, b),
                 BinaryOperator.Power => domain.Pow(x, y),
                 _ => x * y,
             }, null);
@@ -305,7 +325,10 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
                 return new Value(T.Zero, Mv(m, context, frame).Scale(Scalar(s, context)));
             }
             case BinaryOperator.Divide:
-                return new Value(T.Zero, Mv(b.Left, context, frame) / Scalar(b.Right, context));
+            {
+                var (dividend, divisor) = (Mv(b.Left, context, frame), Scalar(b.Right, context));
+                return new Value(T.Zero, Divide(() => dividend / divisor, b));
+            }
         }
         if (b.Operator == BinaryOperator.Op && OuterProductChain(b) is { Count: >= 3 } factors)
         {

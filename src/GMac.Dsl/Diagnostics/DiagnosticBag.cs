@@ -61,10 +61,16 @@ public sealed class DiagnosticBag
     public void ReportDefinitionCycle(SourceSpan span, string kind, string cycle) =>
         Error("GMAC0123", span, $"{kind} definitions form a cycle: {cycle}");
     public void ReportInvalidDefinition(SourceSpan span, string message) => Error("GMAC0124", span, message);
+    public void ReportEmptyLimits(SourceSpan span, string binding, string member, string min, string max) =>
+        Error("GMAC0125", span, $"class binding '{binding}' limits '{member}' to at least {min} and at most {max}: no value satisfies both");
 
     // ---- scalar expressions
     public void ReportInvalidScalar(SourceSpan span, string message) =>
         Error("GMAC0130", span, $"invalid scalar expression: {message}");
+    public void ReportDivisionByZero(SourceSpan span, string divisor) =>
+        Error("GMAC0131", span, $"division by zero: '{divisor}' evaluates to zero");
+    public void ReportNoRealValue(SourceSpan span, string expression, double value) =>
+        Error("GMAC0132", span, $"'{expression}' has no finite real value (it evaluates to {(double.IsNaN(value) ? "NaN" : value > 0 ? "infinity" : "-infinity")})");
 
     // ---- evaluation
     public static Diagnostic EvaluationError(SourceSpan span, string message) =>

@@ -147,9 +147,9 @@ public sealed partial class MacroCodeGenerator
                     errors.Add(new GenerationError("GMAC0305", $"'{parameter.Name}.{frame.BladeName(new BasisBlade(coefficient.Blade.Mask))}' is bound twice", c.Line, c.Column));
             }
             foreach (var (member, min) in binding.Minimums)
-                if (atoms.Find(Member(member)) is { } v) assumptions = assumptions.WithMinimum(v, min);
+                if (atoms.Find(Member(member)) is { } v) assumptions = WithBound(assumptions, v, Member(member), min, true, c, errors);
             foreach (var (member, max) in binding.Maximums)
-                if (atoms.Find(Member(member)) is { } v) assumptions = assumptions.WithMaximum(v, max);
+                if (atoms.Find(Member(member)) is { } v) assumptions = WithBound(assumptions, v, Member(member), max, false, c, errors);
             return assumptions;
         }
 

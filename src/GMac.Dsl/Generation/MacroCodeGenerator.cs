@@ -4,6 +4,7 @@ using GMac.Core.CodeGeneration;
 using GMac.Core.Numerics;
 using GMac.Core.Symbolic;
 using GMac.Dsl.Compilation;
+using GMac.Dsl.Diagnostics;
 using GMac.Dsl.Semantics;
 
 namespace GMac.Dsl.Generation;
@@ -40,7 +41,33 @@ public sealed partial class MacroCodeGenerator
         {
             return new GenerationOutcome(CodeGenerator.Generate(plan.Request), errors, plan);
         }
-        catch (Exception e) when (e is MacroEvaluationException or AlgebraException or InvalidOperationException)
+        catch (MacroEvaluationException e)
+        {
+            errors.Add(new GenerationError(e.Code ?? "GMAC0310", $"macro '{macroName}' cannot be generated for these bindings: {e.Message}", regionLine, 1)
+            {
+                Source = e.Span,
+            });
+            return new GenerationOutcome(null, errors, null);
+        }
+        catch (DivideByZeroException)
+        {
+            // A divisor that only vanishes once simplified under the bindings' assumptions.
+            errors.Add(new GenerationError(GenerationCodes.DivisionByZero,
+                $"macro '{macroName}' divides by an expression that simplifies to zero for these bindings", regionLine, 1)
+            {
+                Source = plan.Macro.Declaration,
+            });
+            return new GenerationOutcome(null, errors, null);
+        }
+        catch (AlgebraException e) when (e.ExceedsLimit)
+        {
+            errors.Add(new GenerationError(GenerationCodes.TooLarge, $"macro '{macroName}' cannot be generated: {e.Message}", regionLine, 1)
+            {
+                Source = plan.Macro.Declaration,
+            });
+            return new GenerationOutcome(null, errors, null);
+        }
+        catch (Exception e) when (e is AlgebraException or InvalidOperationException)
         {
             errors.Add(new GenerationError("GMAC0310", $"macro '{macroName}' cannot be generated for these bindings: {e.Message}", regionLine, 1));
             return new GenerationOutcome(null, errors, null);
@@ -82,7 +109,7 @@ public sealed partial class MacroCodeGenerator
                 errors.Add(new GenerationError("GMAC0306", $"'{a.Expression}' in an assumption is not read by any binding of this binding point", a.Line, a.Column));
                 continue;
             }
-            assumptions = a.IsMinimum ? assumptions.WithMinimum(variable, a.Value) : assumptions.WithMaximum(variable, a.Value);
+            assumptions = WithBound(assumptions, variable, a.Expression, a.Value, a.IsMinimum, a, errors);
         }
         if (errors.Count > 0) return null;
         if (outputs.Count == 0)
@@ -120,6 +147,25 @@ public sealed partial class MacroCodeGenerator
             Join = join,
         };
         return new BindingPointPlan(macro, request, atoms.Texts, values => NumericReference(macro, inputValues, outputs, values));
+    }
+
+    /// <summary>
+    /// Adds a minimum or maximum for a bound expression; one that leaves no value between the
+    /// minimum and the maximum is reported at the binding line that caused it, and not added.
+    /// </summary>
+    private static Assumptions WithBound(Assumptions assumptions, string variable, string expression, Rational value, bool isMinimum,
+        BindingSpec at, List<GenerationError> errors)
+    {
+        var min = assumptions.MinimumOf(variable);
+        var max = assumptions.MaximumOf(variable);
+        if (isMinimum ? max is { } hi && value > hi : min is { } lo && value < lo)
+        {
+            var (lower, upper) = isMinimum ? (value, max!.Value) : (min!.Value, value);
+            errors.Add(new GenerationError(GenerationCodes.EmptyAssumption,
+                $"'{expression}' is assumed to be at least {lower} and at most {upper}: no value satisfies both", at.Line, at.Column));
+            return assumptions;
+        }
+        return isMinimum ? assumptions.WithMinimum(variable, value) : assumptions.WithMaximum(variable, value);
     }
 
     private static SymbolicVerbatim Verbatim(string text, IReadOnlyList<Scalar> values)

@@ -484,6 +484,9 @@ internal sealed partial class Binder
                 if (EvaluateRational(limit.expr(), "a limit") is { } value) target[member] = value;
             }
         }
+        foreach (var (member, min) in minimums)
+            if (maximums.TryGetValue(member, out var max) && min > max)
+                _diagnostics.ReportEmptyLimits(binding.Declaration, name, member, min.ToString(), max.ToString());
         binding.Minimums = minimums;
         binding.Maximums = maximums;
     }

@@ -69,7 +69,7 @@ internal sealed partial class Binder
                     _diagnostics.ReportTypeError(span, "'^' raises a scalar to a power; use 'op' for the outer product");
                     return null;
                 }
-                return new BoundBinaryOperation(BinaryOperator.Power, l, r, ExpressionType.Scalar, span);
+                return CheckConstant(new BoundBinaryOperation(BinaryOperator.Power, l, r, ExpressionType.Scalar, span), pw.GetText());
             }
             case ScaleExprContext s:
                 return BindScale(s, scope, span);
@@ -141,6 +141,42 @@ internal sealed partial class Binder
         return a ?? b;
     }
 
+    /// <summary>
+    /// Reports a division by a constant zero, or a constant operation with finite operands and no
+    /// finite real value (sqrt(-4), log(0), asin(2), 0^-1): generated code would compute NaN or
+    /// infinity. Null when reported.
+    /// </summary>
+    private BoundExpression? CheckConstant(BoundExpression e, string text, string? divisorText = null)
+    {
+        if (e is BoundBinaryOperation { Operator: BinaryOperator.Divide } d)
+        {
+            if (NumericFolding.TryEvaluate(d.Right) is 0)
+            {
+                _diagnostics.ReportDivisionByZero(e.Span, divisorText ?? text);
+                return null;
+            }
+            if (!d.Type.IsScalar) return e;
+        }
+        if (NumericFolding.TryEvaluate(e) is { } value && !double.IsFinite(value) && OperandsAreFinite(e) && !IsPowerOverflow(e, value))
+        {
+            _diagnostics.ReportNoRealValue(e.Span, text, value);
+            return null;
+        }
+        return e;
+    }
+
+    /// <summary>A power too large for a double but exact as a rational (2^64)^64 is not a missing value.</summary>
+    private static bool IsPowerOverflow(BoundExpression e, double value) =>
+        e is BoundBinaryOperation { Operator: BinaryOperator.Power } p && !double.IsNaN(value) && NumericFolding.TryEvaluate(p.Left) is not 0.0;
+
+    private static bool OperandsAreFinite(BoundExpression e) =>
+        (e switch
+        {
+            BoundBinaryOperation b => [b.Left, b.Right],
+            BoundScalarFunctionCall c => c.Arguments,
+            _ => (IReadOnlyList<BoundExpression>)[],
+        }).All(o => NumericFolding.TryEvaluate(o) is { } v && double.IsFinite(v));
+
     private static bool IsScalarValued(BoundExpression e) => e.Type.IsScalar || e.Type.GradeMask == 1;
 
     private BoundExpression? BindScale(ScaleExprContext s, Scope scope, SourceSpan span)
@@ -160,7 +196,7 @@ internal sealed partial class Binder
             ? ExpressionType.Scalar
             : IsScalarValued(l) && !l.Type.IsScalar && IsScalarValued(r) ? l.Type
             : IsScalarValued(l) ? r.Type with { Frame = r.Type.Frame ?? l.Type.Frame } : l.Type;
-        return new BoundBinaryOperation(divide ? BinaryOperator.Divide : BinaryOperator.Multiply, l, r, type, span);
+        return CheckConstant(new BoundBinaryOperation(divide ? BinaryOperator.Divide : BinaryOperator.Multiply, l, r, type, span), s.GetText(), s.expr(1).GetText());
     }
 
     private BoundExpression? BindProduct(ProductExprContext p, Scope scope, SourceSpan span)
@@ -305,7 +341,7 @@ internal sealed partial class Binder
             }
             var bound = args.Select(a => BindExpression(a, scope)).ToList();
             if (bound.Any(b => b is null)) return null;
-            return new BoundScalarFunctionCall(fn.Function, bound!, span);
+            return CheckConstant(new BoundScalarFunctionCall(fn.Function, bound!, span), call.GetText());
         }
         if (scope.Macro is null)
         {

@@ -372,8 +372,8 @@ internal sealed partial class Binder
                     return null;
                 }
                 if (factor.Type.Frame is not null && Combine(operand, factor, span) is null) return null;
-                return new BoundBinaryOperation(name == "scale" ? BinaryOperator.Multiply : BinaryOperator.Divide,
-                    operand, factor, operand.Type, span);
+                return CheckConstant(new BoundBinaryOperation(name == "scale" ? BinaryOperator.Multiply : BinaryOperator.Divide,
+                    operand, factor, operand.Type, span), $"{name}(...)", args[1].GetText());
             }
             case "diff":
             {

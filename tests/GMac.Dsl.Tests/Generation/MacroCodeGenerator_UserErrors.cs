@@ -1,0 +1,83 @@
+using GMac.Dsl.Generation;
+using GMac.Dsl.Tests.Support;
+
+namespace GMac.Dsl.Tests.Generation;
+
+/// <summary>Problems that only show once a binding point is generated are user errors with a position, not internal errors.</summary>
+public sealed class MacroCodeGenerator_UserErrors
+{
+    private const string Source = """
+        define binding V as
+            use frame e3d
+            bind { e1 : <x>; e2 : <y>; e3 : <z> }
+            min { x : 5 }
+        end binding
+        define macro Norm2 as
+            inputs: { u : e3d.Vector }
+            outputs: { s : e3d.Scalar }
+            performs:
+                s = (u sp u).<1>;
+        end macro
+        define macro DivZero as
+            inputs: { x : e3d.Vector }
+            outputs: { w : e3d.Vector }
+            performs:
+                w = x / (x.<e1> - x.<e1>);
+        end macro
+        """;
+
+    private static MacroCodeGenerator Generator() =>
+        new(DslProject.FromSources([("test.gmac", Source), ("prelude.gmac", DslSnippets.E3d)]));
+
+    private static CoefficientBindingSpec Bind(string parameter, string blade, string value, int line) =>
+        new(parameter, blade, value, true, line, 3);
+
+    [Fact]
+    public void AssumeMin_above_AssumeMax_is_reported_at_the_assumption_that_empties_the_bounds()
+    {
+        var outcome = Generator().Generate("Norm2",
+        [
+            Bind("u", "e1", "<a>", 2), Bind("s", "1", "<r>", 3),
+            new AssumptionSpec("a", 3, true, 4, 5), new AssumptionSpec("a", 1, false, 5, 7),
+        ]);
+        var error = Assert.Single(outcome.Errors);
+        Assert.Equal(("GMAC0312", 5, 7), (error.Code, error.Line, error.Column));
+        Assert.Contains("'a'", error.Message);
+    }
+
+    [Fact]
+    public void AssumeMax_below_a_class_binding_minimum_is_reported_at_the_assumption()
+    {
+        var outcome = Generator().Generate("Norm2",
+        [
+            new ClassBindingSpec("u", "V", "obj", 2, 3), Bind("s", "1", "<r>", 3),
+            new AssumptionSpec("obj.x", 1, false, 6, 9),
+        ]);
+        var error = Assert.Single(outcome.Errors);
+        Assert.Equal(("GMAC0312", 6, 9), (error.Code, error.Line, error.Column));
+    }
+
+    [Fact]
+    public void Consistent_assumptions_generate()
+    {
+        var outcome = Generator().Generate("Norm2",
+        [
+            Bind("u", "e1", "<a>", 2), Bind("s", "1", "<r>", 3),
+            new AssumptionSpec("a", 1, true, 4, 5), new AssumptionSpec("a", 3, false, 5, 7),
+        ]);
+        Assert.True(outcome.Succeeded, string.Join("; ", outcome.Errors));
+    }
+
+    [Fact]
+    public void Division_by_an_expression_that_simplifies_to_zero_is_reported_at_the_division_in_the_dsl()
+    {
+        var generator = Generator();
+        var outcome = generator.Generate("DivZero", generator.DefaultBindings("DivZero"), regionLine: 9);
+        var error = Assert.Single(outcome.Errors);
+        Assert.Equal("GMAC0313", error.Code);
+        Assert.Equal(9, error.Line);
+        var at = Assert.IsType<Diagnostics.SourceSpan>(error.Source);
+        // The division "x / (x.<e1> - x.<e1>)" on line 16 of test.gmac, after "w = ".
+        Assert.Equal(("test.gmac", 16, 13), (at.FilePath, at.Line, at.Column));
+    }
+}
