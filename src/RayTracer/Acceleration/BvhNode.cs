@@ -1,4 +1,5 @@
-using RayTracer.Util;
+using RayTracer.Bounds;
+
 
 namespace RayTracer.Acceleration;
 

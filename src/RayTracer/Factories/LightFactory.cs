@@ -1,10 +1,11 @@
+using RayTracer.Colors;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Universal;
 using RayTracer.Lights;
 using RayTracer.Materials;
+using RayTracer.Maths;
 using RayTracer.Sampling;
 using RayTracer.Scenes;
-using RayTracer.Util;
 
 namespace RayTracer.Factories;
 

@@ -1,6 +1,6 @@
+using RayTracer.Colors;
 using RayTracer.Materials;
 using RayTracer.Textures;
-using RayTracer.Util;
 
 namespace RayTracer.Factories;
 

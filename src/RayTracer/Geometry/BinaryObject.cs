@@ -1,4 +1,6 @@
-using RayTracer.Util;
+using RayTracer.Bounds;
+using RayTracer.Tracing;
+
 
 namespace RayTracer.Geometry;
 

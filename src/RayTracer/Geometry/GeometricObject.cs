@@ -1,5 +1,8 @@
+using RayTracer.Bounds;
 using RayTracer.Materials;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Randomness;
+using RayTracer.Tracing;
 
 namespace RayTracer.Geometry;
 

@@ -1,5 +1,8 @@
+using RayTracer.Bounds;
 using RayTracer.Materials;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Tracing;
+using RayTracer.Transforms;
 
 namespace RayTracer.Geometry;
 

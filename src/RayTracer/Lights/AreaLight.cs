@@ -1,7 +1,9 @@
+using RayTracer.Colors;
 using RayTracer.Geometry;
 using RayTracer.Materials;
+using RayTracer.Maths;
 using RayTracer.Sampling;
-using RayTracer.Util;
+using RayTracer.Tracing;
 
 namespace RayTracer.Lights;
 

@@ -1,6 +1,8 @@
 using RayTracer.BRDFs;
 using RayTracer.BTDFs;
-using RayTracer.Util;
+using RayTracer.Colors;
+using RayTracer.Maths;
+using RayTracer.Tracing;
 
 namespace RayTracer.Materials;
 

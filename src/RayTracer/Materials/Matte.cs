@@ -1,6 +1,8 @@
 using RayTracer.BRDFs;
+using RayTracer.Colors;
+using RayTracer.Maths;
 using RayTracer.Textures;
-using RayTracer.Util;
+using RayTracer.Tracing;
 
 namespace RayTracer.Materials;
 

@@ -1,5 +1,5 @@
+using RayTracer.Colors;
 using RayTracer.Textures;
-using RayTracer.Util;
 
 namespace RayTracer.Materials;
 

@@ -1,4 +1,6 @@
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Randomness;
+
 
 namespace RayTracer.Sampling;
 

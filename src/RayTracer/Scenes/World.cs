@@ -1,7 +1,9 @@
+using RayTracer.Colors;
 using RayTracer.Geometry;
 using RayTracer.Lights;
+using RayTracer.Maths;
+using RayTracer.Textures;
 using RayTracer.Tracing;
-using RayTracer.Util;
 using RayTracer.Viewing;
 
 namespace RayTracer.Scenes;

@@ -1,4 +1,6 @@
-using RayTracer.Util;
+using RayTracer.Tracing;
+using RayTracer.Transforms;
+
 
 namespace RayTracer.Textures;
 

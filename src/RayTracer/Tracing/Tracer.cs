@@ -1,6 +1,7 @@
+using RayTracer.Colors;
 using RayTracer.Materials;
+using RayTracer.Maths;
 using RayTracer.Scenes;
-using RayTracer.Util;
 
 namespace RayTracer.Tracing;
 

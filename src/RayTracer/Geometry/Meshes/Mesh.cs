@@ -1,4 +1,7 @@
-using RayTracer.Util;
+using RayTracer.Bounds;
+using RayTracer.Maths;
+using RayTracer.Textures;
+
 
 namespace RayTracer.Geometry.Meshes;
 

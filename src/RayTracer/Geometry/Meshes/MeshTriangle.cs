@@ -1,6 +1,9 @@
+using RayTracer.Bounds;
 using RayTracer.Geometry.Solvers;
 using RayTracer.Materials;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Textures;
+using RayTracer.Tracing;
 
 namespace RayTracer.Geometry.Meshes;
 

@@ -1,6 +1,7 @@
 using System.Buffers.Binary;
 using System.Globalization;
 using System.Text;
+using RayTracer.Maths;
 using RayTracer.Util;
 
 namespace RayTracer.Geometry.Meshes;

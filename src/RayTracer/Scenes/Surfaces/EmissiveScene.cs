@@ -1,8 +1,9 @@
+using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Materials;
+using RayTracer.Maths;
 using RayTracer.Textures.Noise;
 using RayTracer.Textures.Solid;
-using RayTracer.Util;
 
 namespace RayTracer.Scenes.Surfaces;
 

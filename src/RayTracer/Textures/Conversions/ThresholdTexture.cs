@@ -1,4 +1,5 @@
-using RayTracer.Util;
+using RayTracer.Tracing;
+
 
 namespace RayTracer.Textures.Conversions;
 

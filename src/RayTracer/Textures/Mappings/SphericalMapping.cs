@@ -1,4 +1,5 @@
-using RayTracer.Util;
+using RayTracer.Maths;
+
 
 namespace RayTracer.Textures.Mappings;
 
