@@ -1,6 +1,5 @@
 using RayTracer.Bounds;
 
-
 namespace RayTracer.Acceleration;
 
 /// <summary>

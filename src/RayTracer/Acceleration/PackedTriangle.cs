@@ -1,6 +1,5 @@
 using RayTracer.Maths;
 
-
 namespace RayTracer.Acceleration;
 
 /// <summary>A triangle as the ray test wants it (v0 and two edges), stored inline for cache-friendly leaves.</summary>

@@ -2,7 +2,6 @@ using RayTracer.Colors;
 using RayTracer.Maths;
 using RayTracer.Tracing;
 
-
 namespace RayTracer.BRDFs;
 
 /// <summary>Mirror reflection weighted by the unpolarised Fresnel reflectance of a dielectric interface.</summary>

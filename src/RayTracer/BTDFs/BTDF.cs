@@ -2,7 +2,6 @@ using RayTracer.Colors;
 using RayTracer.Maths;
 using RayTracer.Tracing;
 
-
 namespace RayTracer.BTDFs;
 
 /// <summary>Bidirectional transmittance distribution function (light passing through a surface).</summary>

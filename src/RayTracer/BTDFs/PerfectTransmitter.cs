@@ -2,7 +2,6 @@ using RayTracer.Colors;
 using RayTracer.Maths;
 using RayTracer.Tracing;
 
-
 namespace RayTracer.BTDFs;
 
 /// <summary>Specular transmission with a fixed fraction kt and index of refraction <see cref="Ior"/>.</summary>

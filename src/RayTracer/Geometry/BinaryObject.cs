@@ -1,7 +1,6 @@
 using RayTracer.Bounds;
 using RayTracer.Tracing;
 
-
 namespace RayTracer.Geometry;
 
 /// <summary>

@@ -2,7 +2,6 @@ using RayTracer.Colors;
 using RayTracer.Maths;
 using RayTracer.Tracing;
 
-
 namespace RayTracer.Lights;
 
 /// <summary>Constant light from everywhere, used only in the ambient term.</summary>

@@ -1,6 +1,5 @@
 using RayTracer.Maths;
 
-
 namespace RayTracer.Sampling;
 
 /// <summary>One random point in each cell of an n×n grid; the sample count is rounded down to a square.</summary>

@@ -1,6 +1,5 @@
 using RayTracer.Maths;
 
-
 namespace RayTracer.Sampling;
 
 /// <summary>Independent uniform points: no stratification (the baseline the others improve on).</summary>

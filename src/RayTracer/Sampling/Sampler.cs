@@ -1,7 +1,6 @@
 using RayTracer.Maths;
 using RayTracer.Randomness;
 
-
 namespace RayTracer.Sampling;
 
 /// <summary>

@@ -1,6 +1,5 @@
 using RayTracer.Randomness;
 
-
 namespace RayTracer.Sampling;
 
 /// <summary>

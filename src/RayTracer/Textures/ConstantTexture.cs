@@ -1,6 +1,5 @@
 using RayTracer.Tracing;
 
-
 namespace RayTracer.Textures;
 
 /// <summary>The same value everywhere (a plain colour, scalar, flag or vector).</summary>

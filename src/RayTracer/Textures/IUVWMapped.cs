@@ -1,6 +1,5 @@
 using RayTracer.Maths;
 
-
 namespace RayTracer.Textures;
 
 /// <summary>A texture defined on 3D space, evaluated at a (local) point.</summary>

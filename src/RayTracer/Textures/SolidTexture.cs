@@ -1,7 +1,6 @@
 using RayTracer.Maths;
 using RayTracer.Tracing;
 
-
 namespace RayTracer.Textures;
 
 /// <summary>A texture defined on 3D space, evaluated at the local hit point (carved out of a solid block).</summary>

@@ -1,7 +1,6 @@
 using RayTracer.Tracing;
 using RayTracer.Transforms;
 
-
 namespace RayTracer.Textures;
 
 /// <summary>

@@ -1,7 +1,6 @@
 using RayTracer.Maths;
 using RayTracer.Tracing;
 
-
 namespace RayTracer.Viewing;
 
 /// <summary>Parallel projection: all rays travel along -w from points on the view plane through the eye.</summary>

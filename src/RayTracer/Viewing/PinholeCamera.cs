@@ -1,7 +1,6 @@
 using RayTracer.Maths;
 using RayTracer.Tracing;
 
-
 namespace RayTracer.Viewing;
 
 /// <summary>Perspective projection from the eye through a view plane at distance <see cref="ViewDistance"/>.</summary>

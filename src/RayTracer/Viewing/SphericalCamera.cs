@@ -1,7 +1,6 @@
 using RayTracer.Maths;
 using RayTracer.Tracing;
 
-
 namespace RayTracer.Viewing;
 
 /// <summary>

@@ -3,7 +3,6 @@ using RayTracer.Maths;
 using RayTracer.Randomness;
 using RayTracer.Tracing;
 
-
 namespace RayTracer.Tests.Bounds;
 
 public class BoundingBox_SlabTest

@@ -2,7 +2,6 @@ using RayTracer.Maths;
 using RayTracer.Randomness;
 using RayTracer.Tracing;
 
-
 namespace RayTracer.Tests.Geometry;
 
 /// <summary>

@@ -2,7 +2,6 @@ using RayTracer.Colors;
 using RayTracer.Maths;
 using RayTracer.Randomness;
 
-
 namespace RayTracer.Tests.Maths;
 
 public class Vector3D_Algebra

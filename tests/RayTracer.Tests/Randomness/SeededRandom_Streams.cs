@@ -1,6 +1,5 @@
 using RayTracer.Randomness;
 
-
 namespace RayTracer.Tests.Randomness;
 
 public class SeededRandom_Streams

@@ -2,7 +2,6 @@ using RayTracer.Maths;
 using RayTracer.Randomness;
 using RayTracer.Transforms;
 
-
 namespace RayTracer.Tests.Transforms;
 
 public class AffineTransform_Inverse

@@ -3,7 +3,6 @@ using RayTracer.Maths;
 using RayTracer.Textures;
 using RayTracer.Tracing;
 
-
 namespace RayTracer.Geometry.Generic;
 
 /// <summary>Flat ring Inner ≤ √(x² + z²) ≤ Outer in the plane y = 0, normal +y.</summary>

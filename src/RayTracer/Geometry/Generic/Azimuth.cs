@@ -1,6 +1,5 @@
 using RayTracer.Maths;
 
-
 namespace RayTracer.Geometry.Generic;
 
 /// <summary>Azimuth about the +y axis measured from +z towards +x, in [0, 2π) (Suffern's convention for part objects).</summary>

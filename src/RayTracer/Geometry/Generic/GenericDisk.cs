@@ -2,7 +2,6 @@ using RayTracer.Bounds;
 using RayTracer.Maths;
 using RayTracer.Textures;
 
-
 namespace RayTracer.Geometry.Generic;
 
 /// <summary>Disk of the given radius about the origin in the plane y = 0, normal +y.</summary>

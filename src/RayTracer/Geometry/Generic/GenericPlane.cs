@@ -3,7 +3,6 @@ using RayTracer.Maths;
 using RayTracer.Textures;
 using RayTracer.Tracing;
 
-
 namespace RayTracer.Geometry.Generic;
 
 /// <summary>The plane y = 0 with normal +y. Place it with an <see cref="Instance"/>.</summary>

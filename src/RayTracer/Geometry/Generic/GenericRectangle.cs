@@ -1,7 +1,6 @@
 using RayTracer.Bounds;
 using RayTracer.Textures;
 
-
 namespace RayTracer.Geometry.Generic;
 
 /// <summary>Rectangle |x| ≤ HalfWidth, |z| ≤ HalfDepth in the plane y = 0, normal +y.</summary>

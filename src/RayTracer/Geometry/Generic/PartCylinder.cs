@@ -1,6 +1,5 @@
 using RayTracer.Maths;
 
-
 namespace RayTracer.Geometry.Generic;
 
 /// <summary>Open cylinder restricted to an azimuth range [PhiMin, PhiMax] (radians, from +z towards +x).</summary>

@@ -1,6 +1,5 @@
 using RayTracer.Maths;
 
-
 namespace RayTracer.Geometry.Generic;
 
 /// <summary>Torus restricted to an azimuth range about the y axis; open, so the normal faces the ray.</summary>

@@ -2,7 +2,6 @@ using RayTracer.Bounds;
 using RayTracer.Maths;
 using RayTracer.Textures;
 
-
 namespace RayTracer.Geometry.Meshes;
 
 /// <summary>

@@ -1,7 +1,6 @@
 using RayTracer.Maths;
 using RayTracer.Tracing;
 
-
 namespace RayTracer.Geometry.Solvers;
 
 /// <summary>Ray–sphere roots, shared by every sphere-shaped primitive.</summary>

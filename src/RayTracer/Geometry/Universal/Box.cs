@@ -2,7 +2,6 @@ using RayTracer.Bounds;
 using RayTracer.Maths;
 using RayTracer.Tracing;
 
-
 namespace RayTracer.Geometry.Universal;
 
 /// <summary>Solid axis-aligned box between two corners; normals are the outward face normals.</summary>

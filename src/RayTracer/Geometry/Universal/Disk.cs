@@ -3,7 +3,6 @@ using RayTracer.Maths;
 using RayTracer.Textures;
 using RayTracer.Tracing;
 
-
 namespace RayTracer.Geometry.Universal;
 
 /// <summary>Flat disk with any center, orientation and radius; one-sided normal as given.</summary>

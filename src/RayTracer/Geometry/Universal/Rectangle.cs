@@ -3,7 +3,6 @@ using RayTracer.Maths;
 using RayTracer.Textures;
 using RayTracer.Tracing;
 
-
 namespace RayTracer.Geometry.Universal;
 
 /// <summary>Parallelogram p0 + u a + v b, u, v ∈ [0, 1], with normal along a × b.</summary>

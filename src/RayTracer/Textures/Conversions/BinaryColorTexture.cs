@@ -1,7 +1,6 @@
 using RayTracer.Colors;
 using RayTracer.Tracing;
 
-
 namespace RayTracer.Textures.Conversions;
 
 /// <summary>Colours a binary texture: <see cref="OnColor"/> where it is true, <see cref="OffColor"/> elsewhere.</summary>

@@ -1,7 +1,6 @@
 using RayTracer.Colors;
 using RayTracer.Tracing;
 
-
 namespace RayTracer.Textures.Conversions;
 
 /// <summary>Blends two colours by a scalar texture clamped to [0, 1] (noise → colour).</summary>

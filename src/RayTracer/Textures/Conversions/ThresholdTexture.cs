@@ -1,6 +1,5 @@
 using RayTracer.Tracing;
 
-
 namespace RayTracer.Textures.Conversions;
 
 /// <summary>Binary texture that is true where a scalar texture exceeds <see cref="Threshold"/> (masks, spots).</summary>

@@ -2,7 +2,6 @@ using RayTracer.Colors;
 using RayTracer.Maths;
 using RayTracer.Tracing;
 
-
 namespace RayTracer.Textures.Conversions;
 
 /// <summary>Shows a vector texture as colour, mapping each component from [-1, 1] to [0, 1] (as normal maps do).</summary>

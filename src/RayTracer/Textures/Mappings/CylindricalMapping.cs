@@ -1,6 +1,5 @@
 using RayTracer.Maths;
 
-
 namespace RayTracer.Textures.Mappings;
 
 /// <summary>Wraps the image around the unit cylinder about +y for y in [-1, 1].</summary>

@@ -1,6 +1,5 @@
 using RayTracer.Maths;
 
-
 namespace RayTracer.Textures.Mappings;
 
 /// <summary>Projects the square [-1, 1]² of the x–z plane onto the image: u from z, v from x.</summary>

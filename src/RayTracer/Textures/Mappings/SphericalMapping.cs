@@ -1,6 +1,5 @@
 using RayTracer.Maths;
 
-
 namespace RayTracer.Textures.Mappings;
 
 /// <summary>Latitude–longitude map of the unit sphere: u from the azimuth about +y, v = 1 at the north pole (+y).</summary>

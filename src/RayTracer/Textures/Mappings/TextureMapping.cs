@@ -1,6 +1,5 @@
 using RayTracer.Maths;
 
-
 namespace RayTracer.Textures.Mappings;
 
 /// <summary>Maps a local hit point to (u, v) in [0, 1]² for image and other 2D textures.</summary>

@@ -1,6 +1,5 @@
 using RayTracer.Maths;
 
-
 namespace RayTracer.Textures.Patterns;
 
 /// <summary>Binary solid checkerboard of cubes with side <see cref="Size"/>.</summary>

@@ -1,6 +1,5 @@
 using RayTracer.Maths;
 
-
 namespace RayTracer.Textures.Patterns;
 
 /// <summary>Binary squares of side <see cref="Size"/> on the x–z plane (for floors), ignoring height.</summary>
