@@ -94,9 +94,4 @@ public sealed class Instance : GeometricObject
     }
 
     public override BoundingBox GetBoundingBox() => Transform.TransformBox(Target.GetBoundingBox());
-
-    public override Point3D Sample(Point2D unitSquareSample) => Transform.TransformPoint(Target.Sample(unitSquareSample));
-
-    public override Normal3D GetNormal(Point3D p) =>
-        Transform.TransformNormal(Target.GetNormal(Transform.InverseTransformPoint(p))).Normalized();
 }

@@ -51,4 +51,19 @@ public class AreaLight_Shapes
         var expected = Kd * Le * radius * radius / (distance * distance);
         Assert.InRange(value, expected * 0.99, expected * 1.01);
     }
+
+    [Fact]
+    public void Two_triangle_lights_covering_a_rectangle_match_its_configuration_factor()
+    {
+        // The same 2×1 panel as above, split along a diagonal into two triangle lights facing down.
+        Point3D corner = new(-1, -0.5, 1);
+        Vector3D a = new(0, 1, 0), b = new(2, 0, 0);
+        var value = RenderFloorUnder(world =>
+        {
+            LightFactory.AddAreaLight(world, new Triangle(corner, corner + a, corner + b), Le);
+            LightFactory.AddAreaLight(world, new Triangle(corner + a + b, corner + b, corner + a), Le);
+        });
+        var expected = Kd * Le * 4 * CornerFactor(1, 0.5, 1);
+        Assert.InRange(value, expected * 0.99, expected * 1.01);
+    }
 }

@@ -7,7 +7,7 @@ using RayTracer.Tracing;
 namespace RayTracer.Geometry.Universal;
 
 /// <summary>Stand-alone flat triangle; normal along (v1 - v0) × (v2 - v0).</summary>
-public sealed class Triangle : GeometricObject, ITriangle
+public sealed class Triangle : GeometricObject, ITriangle, ISampledShape
 {
     private readonly Vector3D _e1;
     private readonly Vector3D _e2;
@@ -61,13 +61,13 @@ public sealed class Triangle : GeometricObject, ITriangle
     }
 
     /// <summary>Uniform over the area (square-root warp of the unit square).</summary>
-    public override Point3D Sample(Point2D u)
+    public Point3D Sample(Point2D u)
     {
         double s = Math.Sqrt(u.x);
         return V0 + (s * (1 - u.y)) * _e1 + (s * u.y) * _e2;
     }
 
-    public override double Pdf(ShadingRecord sr) => 1.0 / Area;
+    public double Pdf(ShadingRecord sr) => 1.0 / Area;
 
-    public override Normal3D GetNormal(Point3D p) => Normal;
+    public Normal3D GetNormal(Point3D p) => Normal;
 }
