@@ -1,5 +1,6 @@
 using RayTracer.Bounds;
 using RayTracer.Geometry.Solvers;
+using RayTracer.Kernels;
 using RayTracer.Materials;
 using RayTracer.Maths;
 using RayTracer.Textures;
@@ -97,7 +98,7 @@ public sealed class MeshTriangle : GeometricObject, ITriangle
         }
         else
         {
-            n = new Normal3D(Vector3D.Cross(e1, e2));
+            n = TriangleNormal.OfEdges(e1, e2);
         }
 
         sr.Normal = n.Normalized();

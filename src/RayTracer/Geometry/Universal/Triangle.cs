@@ -1,12 +1,13 @@
 using RayTracer.Bounds;
 using RayTracer.Geometry.Solvers;
+using RayTracer.Kernels;
 using RayTracer.Maths;
 using RayTracer.Textures;
 using RayTracer.Tracing;
 
 namespace RayTracer.Geometry.Universal;
 
-/// <summary>Stand-alone flat triangle; normal along (v1 - v0) × (v2 - v0).</summary>
+/// <summary>Stand-alone flat triangle; normal along (v1 − v0) × (v2 − v0), from the generated <see cref="TriangleNormal"/> kernel.</summary>
 public sealed class Triangle : GeometricObject, ITriangle, ISampledShape
 {
     private readonly Vector3D _e1;
@@ -19,9 +20,9 @@ public sealed class Triangle : GeometricObject, ITriangle, ISampledShape
         V2 = v2;
         _e1 = v1 - v0;
         _e2 = v2 - v0;
-        Vector3D n = Vector3D.Cross(_e1, _e2);
+        var n = TriangleNormal.OfEdges(_e1, _e2);
         Area = 0.5 * n.Length;
-        Normal = Area > 0 ? new Normal3D(n.Normalized()) : default;
+        Normal = Area > 0 ? n.Normalized() : default;
     }
 
     public Point3D V0 { get; }
