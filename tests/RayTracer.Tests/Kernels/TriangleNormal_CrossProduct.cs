@@ -48,7 +48,8 @@ public class TriangleNormal_CrossProduct
             AssertClose(EdgeCross(v0, v1, v2), n);
 
             // Independent of any formula: the normal is orthogonal to both edges and |n| = |u| |v| sin θ.
-            Vector3D u = v1 - v0, v = v2 - v0;
+            var u = v1 - v0;
+            var v = v2 - v0;
             var cos = u.Dot(v) / (u.Length * v.Length);
             Assert.Equal(u.Length * v.Length * Math.Sqrt(1 - cos * cos), n.Length, n.Length * 1e-6);
             Assert.True(Math.Abs(n.Dot(u)) <= 1e-12 * n.Length * u.Length);

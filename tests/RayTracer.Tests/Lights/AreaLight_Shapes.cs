@@ -56,8 +56,9 @@ public class AreaLight_Shapes
     public void Two_triangle_lights_covering_a_rectangle_match_its_configuration_factor()
     {
         // The same 2×1 panel as above, split along a diagonal into two triangle lights facing down.
-        Point3D corner = new(-1, -0.5, 1);
-        Vector3D a = new(0, 1, 0), b = new(2, 0, 0);
+        var corner = new Point3D(-1, -0.5, 1);
+        var a = new Vector3D(0, 1, 0);
+        var b = new Vector3D(2, 0, 0);
         var value = RenderFloorUnder(world =>
         {
             LightFactory.AddAreaLight(world, new Triangle(corner, corner + a, corner + b), Le);
