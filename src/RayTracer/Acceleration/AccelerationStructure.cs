@@ -1,5 +1,6 @@
+using RayTracer.Bounds;
 using RayTracer.Geometry;
-using RayTracer.Util;
+using RayTracer.Tracing;
 
 namespace RayTracer.Acceleration;
 

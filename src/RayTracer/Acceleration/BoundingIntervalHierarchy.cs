@@ -1,6 +1,8 @@
 using System.Runtime.CompilerServices;
+using RayTracer.Bounds;
 using RayTracer.Geometry;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Tracing;
 
 namespace RayTracer.Acceleration;
 

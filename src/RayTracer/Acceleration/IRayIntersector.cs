@@ -1,5 +1,5 @@
 using RayTracer.Geometry;
-using RayTracer.Util;
+using RayTracer.Tracing;
 
 namespace RayTracer.Acceleration;
 

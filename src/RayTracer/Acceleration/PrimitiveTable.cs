@@ -1,7 +1,9 @@
 using System.Runtime.CompilerServices;
+using RayTracer.Bounds;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Solvers;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Tracing;
 
 namespace RayTracer.Acceleration;
 

@@ -2,7 +2,8 @@ using System.Diagnostics;
 using System.Globalization;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Meshes;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Tracing;
 
 namespace RayTracer.Acceleration;
 

@@ -1,6 +1,8 @@
+using RayTracer.Colors;
+using RayTracer.Maths;
 using RayTracer.Sampling;
 using RayTracer.Textures;
-using RayTracer.Util;
+using RayTracer.Tracing;
 
 namespace RayTracer.BRDFs;
 

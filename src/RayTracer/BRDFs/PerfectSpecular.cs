@@ -1,5 +1,7 @@
+using RayTracer.Colors;
+using RayTracer.Maths;
 using RayTracer.Textures;
-using RayTracer.Util;
+using RayTracer.Tracing;
 
 namespace RayTracer.BRDFs;
 

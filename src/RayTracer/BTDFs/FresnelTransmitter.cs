@@ -1,5 +1,7 @@
 using RayTracer.BRDFs;
-using RayTracer.Util;
+using RayTracer.Colors;
+using RayTracer.Maths;
+using RayTracer.Tracing;
 
 namespace RayTracer.BTDFs;
 

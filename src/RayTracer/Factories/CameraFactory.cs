@@ -1,5 +1,5 @@
+using RayTracer.Maths;
 using RayTracer.Sampling;
-using RayTracer.Util;
 using RayTracer.Viewing;
 
 namespace RayTracer.Factories;

@@ -1,10 +1,11 @@
+using RayTracer.Colors;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Universal;
 using RayTracer.Lights;
 using RayTracer.Materials;
+using RayTracer.Maths;
 using RayTracer.Sampling;
 using RayTracer.Scenes;
-using RayTracer.Util;
 
 namespace RayTracer.Factories;
 
@@ -19,7 +20,8 @@ public static class LightFactory
         new(new MultiJitteredSampler(samples, seed: SamplerSeeds.AmbientOcclusion), radiance, null, minAmount);
 
     /// <summary>Adds an emissive object as an area light; the object does not cast shadows on its own light.</summary>
-    public static AreaLight AddAreaLight(World world, GeometricObject shape, double radiance, RGBColor? color = null)
+    public static AreaLight AddAreaLight<TShape>(World world, TShape shape, double radiance, RGBColor? color = null)
+        where TShape : GeometricObject, ISampledShape
     {
         var emitter = new Emissive(radiance, color ?? RGBColor.White);
         shape.Material = emitter;

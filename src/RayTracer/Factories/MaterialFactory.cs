@@ -1,6 +1,6 @@
+using RayTracer.Colors;
 using RayTracer.Materials;
 using RayTracer.Textures;
-using RayTracer.Util;
 
 namespace RayTracer.Factories;
 
@@ -9,11 +9,11 @@ public static class MaterialFactory
 {
     public static Matte Matte(RGBColor color, double ka = 0.25, double kd = 0.75) => new(ka, kd, color);
 
-    public static SVMatte Matte(Texture<RGBColor> texture, double ka = 0.25, double kd = 0.75) => new(ka, kd, texture);
+    public static Matte Matte(Texture<RGBColor> texture, double ka = 0.25, double kd = 0.75) => new(ka, kd, texture);
 
     public static Phong Plastic(RGBColor color, double exponent = 50) => new(0.25, 0.6, color, 0.25, exponent);
 
-    public static SVPhong Plastic(Texture<RGBColor> texture, double exponent = 50) => new(0.25, 0.6, texture, 0.25, exponent);
+    public static Phong Plastic(Texture<RGBColor> texture, double exponent = 50) => new(0.25, 0.6, texture, 0.25, exponent);
 
     public static Reflective Mirror(RGBColor tint, double kr = 0.9) => new(0.05, 0.05, tint, 0.0, 100, kr, tint);
 

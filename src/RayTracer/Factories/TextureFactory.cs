@@ -1,9 +1,10 @@
+using RayTracer.Colors;
+using RayTracer.Maths;
 using RayTracer.Textures;
 using RayTracer.Textures.Conversions;
 using RayTracer.Textures.Noise;
 using RayTracer.Textures.Patterns;
 using RayTracer.Textures.Solid;
-using RayTracer.Util;
 
 namespace RayTracer.Factories;
 

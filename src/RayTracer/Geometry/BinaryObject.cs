@@ -1,4 +1,5 @@
-using RayTracer.Util;
+using RayTracer.Bounds;
+using RayTracer.Tracing;
 
 namespace RayTracer.Geometry;
 

@@ -1,5 +1,7 @@
+using RayTracer.Bounds;
 using RayTracer.Materials;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Tracing;
 
 namespace RayTracer.Geometry;
 
@@ -11,12 +13,6 @@ public abstract class GeometricObject
 
     /// <summary>Virtual so that parts of a shared nature (mesh triangles) can also consult it.</summary>
     public virtual bool CastsShadows { get; set; } = true;
-
-    /// <summary>
-    /// Source of uniform samples in [0,1)² used by <see cref="Sample()"/>; area lights set it to their
-    /// sampler. Without one, the calling thread's <see cref="SeededRandom.Current"/> is used.
-    /// </summary>
-    public Func<Point2D>? UnitSquareSamples { get; set; }
 
     [ThreadStatic]
     private static ShadingRecord? _scratch;
@@ -57,33 +53,4 @@ public abstract class GeometricObject
 
     /// <summary>World-space bounds; unbounded objects return <see cref="BoundingBox.Infinite"/>.</summary>
     public abstract BoundingBox GetBoundingBox();
-
-    /// <summary>A point on the surface, uniform with respect to area (area lights).</summary>
-    public Point3D Sample()
-    {
-        Point2D u;
-        if (UnitSquareSamples is { } source)
-        {
-            u = source();
-        }
-        else
-        {
-            SeededRandom random = SeededRandom.Current;
-            u = new Point2D(random.NextDouble(), random.NextDouble());
-        }
-
-        return Sample(u);
-    }
-
-    /// <summary>Maps a uniform sample of the unit square onto the surface.</summary>
-    public virtual Point3D Sample(Point2D unitSquareSample) =>
-        throw new NotSupportedException($"{GetType().Name} cannot be sampled as an area light.");
-
-    /// <summary>Area density of <see cref="Sample()"/>, i.e. 1 / surface area for uniform sampling.</summary>
-    public virtual double Pdf(ShadingRecord sr) =>
-        throw new NotSupportedException($"{GetType().Name} cannot be sampled as an area light.");
-
-    /// <summary>Outward unit normal at a surface point produced by <see cref="Sample()"/>.</summary>
-    public virtual Normal3D GetNormal(Point3D p) =>
-        throw new NotSupportedException($"{GetType().Name} does not provide normals at sample points.");
 }

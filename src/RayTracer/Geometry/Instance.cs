@@ -1,5 +1,8 @@
+using RayTracer.Bounds;
 using RayTracer.Materials;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Tracing;
+using RayTracer.Transforms;
 
 namespace RayTracer.Geometry;
 
@@ -91,9 +94,4 @@ public sealed class Instance : GeometricObject
     }
 
     public override BoundingBox GetBoundingBox() => Transform.TransformBox(Target.GetBoundingBox());
-
-    public override Point3D Sample(Point2D unitSquareSample) => Transform.TransformPoint(Target.Sample(unitSquareSample));
-
-    public override Normal3D GetNormal(Point3D p) =>
-        Transform.TransformNormal(Target.GetNormal(Transform.InverseTransformPoint(p))).Normalized();
 }

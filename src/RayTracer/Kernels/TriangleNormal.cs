@@ -1,4 +1,4 @@
-using RayTracer.Util;
+using RayTracer.Maths;
 
 namespace RayTracer.Kernels;
 
@@ -8,11 +8,15 @@ namespace RayTracer.Kernels;
 /// </summary>
 internal static class TriangleNormal
 {
-    /// <summary>The unnormalized normal; its length is twice the triangle's area.</summary>
-    public static Normal3D Of(Point3D v0, Point3D v1, Point3D v2)
+    /// <summary>The unnormalized normal of triangle (v0, v1, v2); its length is twice the triangle's area.</summary>
+    public static Normal3D Of(Point3D v0, Point3D v1, Point3D v2) => OfEdges(v1 - v0, v2 - v0);
+
+    /// <summary>
+    /// The unnormalized normal of the triangle with edges <paramref name="u"/> = v1 − v0 and
+    /// <paramref name="v"/> = v2 − v0, for callers that already hold the edges.
+    /// </summary>
+    public static Normal3D OfEdges(Vector3D u, Vector3D v)
     {
-        var u = v1 - v0;
-        var v = v2 - v0;
         var n = new Normal3D();
 
         #region GMac : NormalToVectors

@@ -1,5 +1,7 @@
+using RayTracer.Colors;
+using RayTracer.Maths;
 using RayTracer.Sampling;
-using RayTracer.Util;
+using RayTracer.Tracing;
 
 namespace RayTracer.Lights;
 

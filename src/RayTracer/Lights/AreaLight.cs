@@ -1,7 +1,10 @@
+using RayTracer.Colors;
 using RayTracer.Geometry;
 using RayTracer.Materials;
+using RayTracer.Maths;
+using RayTracer.Randomness;
 using RayTracer.Sampling;
-using RayTracer.Util;
+using RayTracer.Tracing;
 
 namespace RayTracer.Lights;
 
@@ -20,22 +23,31 @@ public sealed class AreaLight : Light
 
     private readonly ThreadLocal<LightSample> _sample = new(() => new LightSample());
 
-    /// <param name="sampler">Optional stratified sampler for points on the shape (it becomes the shape's sample source).</param>
-    public AreaLight(GeometricObject shape, Material emitter, Sampler? sampler = null)
+    /// <param name="sampler">Optional stratified sampler for points on the shape; without one, the calling
+    /// thread's <see cref="SeededRandom.Current"/> supplies them.</param>
+    public AreaLight(ISampledShape shape, Material emitter, Sampler? sampler = null)
     {
         Shape = shape;
         Emitter = emitter;
-        if (sampler is not null)
-            shape.UnitSquareSamples = sampler.SampleUnitSquare;
+        Sampler = sampler;
     }
 
-    public GeometricObject Shape { get; }
+    public ISampledShape Shape { get; }
     public Material Emitter { get; }
+    public Sampler? Sampler { get; }
+
+    private Point2D NextUnitSquareSample()
+    {
+        if (Sampler is { } sampler)
+            return sampler.SampleUnitSquare();
+        var random = SeededRandom.Current;
+        return new Point2D(random.NextDouble(), random.NextDouble());
+    }
 
     public override Vector3D GetDirection(ShadingRecord sr)
     {
         var s = _sample.Value!;
-        s.Point = Shape.Sample();
+        s.Point = Shape.Sample(NextUnitSquareSample());
         s.Normal = Shape.GetNormal(s.Point);
         s.Wi = (s.Point - sr.HitPoint).Normalized();
         sr.Direction = s.Wi;

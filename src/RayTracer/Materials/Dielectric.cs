@@ -1,6 +1,8 @@
 using RayTracer.BRDFs;
 using RayTracer.BTDFs;
-using RayTracer.Util;
+using RayTracer.Colors;
+using RayTracer.Maths;
+using RayTracer.Tracing;
 
 namespace RayTracer.Materials;
 
@@ -12,7 +14,7 @@ public sealed class Dielectric : Phong
 {
     public Dielectric(double etaIn = 1.5, double etaOut = 1.0, RGBColor? filterInside = null, RGBColor? filterOutside = null,
         double ks = 0.2, double exponent = 2000)
-        : base(0.0, 0.0, null, ks, exponent)
+        : base(0.0, 0.0, RGBColor.White, ks, exponent)
     {
         FresnelBrdf = new FresnelReflector(etaIn, etaOut);
         FresnelBtdf = new FresnelTransmitter(etaIn, etaOut);

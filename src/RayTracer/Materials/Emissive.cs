@@ -1,5 +1,6 @@
+using RayTracer.Colors;
 using RayTracer.Textures;
-using RayTracer.Util;
+using RayTracer.Tracing;
 
 namespace RayTracer.Materials;
 

@@ -1,4 +1,6 @@
-using RayTracer.Util;
+using RayTracer.Colors;
+using RayTracer.Maths;
+using RayTracer.Tracing;
 
 namespace RayTracer.Materials;
 

@@ -1,10 +1,15 @@
 using RayTracer.BRDFs;
+using RayTracer.Colors;
+using RayTracer.Maths;
 using RayTracer.Textures;
-using RayTracer.Util;
+using RayTracer.Tracing;
 
 namespace RayTracer.Materials;
 
-/// <summary>Diffuse surface: Lambertian ambient and diffuse terms with a shared colour.</summary>
+/// <summary>
+/// Diffuse surface: Lambertian ambient and diffuse terms with a shared colour. The colour is a texture,
+/// so a spatially varying matte is this class too; a plain colour is a constant texture.
+/// </summary>
 public class Matte : Material
 {
     public Matte(double ka = 0.25, double kd = 0.75, RGBColor? cd = null)
@@ -12,8 +17,9 @@ public class Matte : Material
     {
     }
 
-    protected Matte(double ka, double kd, Texture<RGBColor> color)
+    public Matte(double ka, double kd, Texture<RGBColor> color)
     {
+        Color = color;
         AmbientBrdf = new Lambertian(ka, color);
         DiffuseBrdf = new Lambertian(kd, color);
         _diffuseF = DiffuseBrdf.F;
@@ -21,6 +27,9 @@ public class Matte : Material
 
     // Cached so shading does not allocate a delegate per hit.
     private readonly Func<ShadingRecord, Vector3D, Vector3D, RGBColor> _diffuseF;
+
+    /// <summary>Colour of both the ambient and the diffuse term.</summary>
+    public Texture<RGBColor> Color { get; }
 
     public Lambertian AmbientBrdf { get; }
     public Lambertian DiffuseBrdf { get; }

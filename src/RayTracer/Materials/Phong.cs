@@ -1,10 +1,15 @@
 using RayTracer.BRDFs;
+using RayTracer.Colors;
+using RayTracer.Maths;
 using RayTracer.Textures;
-using RayTracer.Util;
+using RayTracer.Tracing;
 
 namespace RayTracer.Materials;
 
-/// <summary>Diffuse plus a glossy highlight (Lambertian + Phong lobe).</summary>
+/// <summary>
+/// Diffuse plus a glossy highlight (Lambertian + Phong lobe). The diffuse colour is a texture, so a
+/// spatially varying Phong is this class too; a plain colour is a constant texture.
+/// </summary>
 public class Phong : Material
 {
     public Phong(double ka = 0.25, double kd = 0.6, RGBColor? cd = null, double ks = 0.2, double exponent = 20, RGBColor? cs = null)
@@ -12,8 +17,9 @@ public class Phong : Material
     {
     }
 
-    protected Phong(double ka, double kd, Texture<RGBColor> color, double ks, double exponent, RGBColor? cs)
+    public Phong(double ka, double kd, Texture<RGBColor> color, double ks, double exponent, RGBColor? cs = null)
     {
+        Color = color;
         AmbientBrdf = new Lambertian(ka, color);
         DiffuseBrdf = new Lambertian(kd, color);
         SpecularBrdf = new GlossySpecular(ks, exponent, cs ?? RGBColor.White);
@@ -22,6 +28,9 @@ public class Phong : Material
 
     // Cached so shading does not allocate a delegate per hit.
     private readonly Func<ShadingRecord, Vector3D, Vector3D, RGBColor> _f;
+
+    /// <summary>Colour of the ambient and diffuse terms (the highlight has its own).</summary>
+    public Texture<RGBColor> Color { get; }
 
     public Lambertian AmbientBrdf { get; }
     public Lambertian DiffuseBrdf { get; }

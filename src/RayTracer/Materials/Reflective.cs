@@ -1,5 +1,6 @@
 using RayTracer.BRDFs;
-using RayTracer.Util;
+using RayTracer.Colors;
+using RayTracer.Tracing;
 
 namespace RayTracer.Materials;
 

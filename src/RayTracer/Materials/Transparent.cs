@@ -1,6 +1,7 @@
 using RayTracer.BRDFs;
 using RayTracer.BTDFs;
-using RayTracer.Util;
+using RayTracer.Colors;
+using RayTracer.Tracing;
 
 namespace RayTracer.Materials;
 

@@ -1,4 +1,4 @@
-using RayTracer.Util;
+using RayTracer.Maths;
 
 namespace RayTracer.Sampling;
 

@@ -1,7 +1,9 @@
+using RayTracer.Colors;
 using RayTracer.Geometry;
 using RayTracer.Lights;
+using RayTracer.Maths;
+using RayTracer.Textures;
 using RayTracer.Tracing;
-using RayTracer.Util;
 using RayTracer.Viewing;
 
 namespace RayTracer.Scenes;
@@ -35,11 +37,15 @@ public class World
     /// <summary>Radiance arriving along a ray that hit nothing.</summary>
     public RGBColor BackgroundRadiance(in Ray ray) => Environment?.Radiance(ray.d) ?? BackgroundColor;
 
-    /// <summary>Nearest hit over all objects, as a filled shading record (world hit point, normal, material).</summary>
-    public ShadingRecord HitObjects(in Ray ray)
+    /// <summary>
+    /// Nearest hit over all objects. Clears <paramref name="sr"/> and fills it (world hit point, normal,
+    /// material, the ray); returns whether anything was hit.
+    /// </summary>
+    public bool HitObjects(in Ray ray, ShadingRecord sr)
     {
         RayStatistics.CountRay();
-        var sr = new ShadingRecord(this);
+        sr.Reset();
+        sr.World = this;
         var tmin = MathConstants.HugeValue;
         Normal3D normal = default;
         Point3D local = default;
@@ -71,7 +77,7 @@ public class World
         }
         sr.Material = material;
         sr.Ray = ray;
-        return sr;
+        return sr.HitAnObject;
     }
 
     /// <summary>True when a shadow-casting object lies on the ray between its origin and <paramref name="maxDistance"/>.</summary>

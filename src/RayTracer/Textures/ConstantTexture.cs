@@ -1,4 +1,4 @@
-using RayTracer.Util;
+using RayTracer.Tracing;
 
 namespace RayTracer.Textures;
 

@@ -1,4 +1,5 @@
-using RayTracer.Util;
+using RayTracer.Tracing;
+using RayTracer.Transforms;
 
 namespace RayTracer.Textures;
 

@@ -1,5 +1,5 @@
 using RayTracer.Textures.Mappings;
-using RayTracer.Util;
+using RayTracer.Tracing;
 
 namespace RayTracer.Textures;
 

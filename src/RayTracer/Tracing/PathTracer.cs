@@ -1,6 +1,6 @@
+using RayTracer.Colors;
 using RayTracer.Materials;
 using RayTracer.Scenes;
-using RayTracer.Util;
 
 namespace RayTracer.Tracing;
 

@@ -1,6 +1,7 @@
+using RayTracer.Colors;
 using RayTracer.Materials;
+using RayTracer.Maths;
 using RayTracer.Scenes;
-using RayTracer.Util;
 
 namespace RayTracer.Tracing;
 
@@ -41,14 +42,20 @@ public abstract class Tracer
         // Dielectrics split every ray in two, so without the throughput test the ray tree grows as 2^depth.
         if (depth > World.ViewPlane.MaxDepth || !(weight >= World.ViewPlane.MinimumThroughput))
             return RGBColor.Black;
-        var sr = World.HitObjects(ray);
-        if (!sr.HitAnObject || sr.Material is null)
-            return World.BackgroundRadiance(ray);
-        sr.Depth = depth;
-        sr.Weight = weight;
-        sr.Ray = ray;
-        tmin = sr.T;
-        return Shade(sr.Material, sr);
+        var sr = ShadingRecordPool.Rent();
+        try
+        {
+            if (!World.HitObjects(ray, sr) || sr.Material is null)
+                return World.BackgroundRadiance(ray);
+            sr.Depth = depth;
+            sr.Weight = weight;
+            tmin = sr.T;
+            return Shade(sr.Material, sr);
+        }
+        finally
+        {
+            ShadingRecordPool.Return();
+        }
     }
 
     protected abstract RGBColor Shade(Material material, ShadingRecord sr);

@@ -1,6 +1,7 @@
+using RayTracer.Colors;
+using RayTracer.Maths;
 using RayTracer.Scenes;
 using RayTracer.Tracing;
-using RayTracer.Util;
 
 namespace RayTracer.Viewing;
 

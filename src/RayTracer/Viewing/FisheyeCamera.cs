@@ -1,4 +1,5 @@
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Tracing;
 
 namespace RayTracer.Viewing;
 

@@ -1,4 +1,4 @@
-using RayTracer.Util;
+using RayTracer.Colors;
 using RayTracer.Viewing.Imaging;
 
 namespace RayTracer.Viewing;

@@ -1,5 +1,6 @@
+using RayTracer.Maths;
 using RayTracer.Sampling;
-using RayTracer.Util;
+using RayTracer.Tracing;
 
 namespace RayTracer.Viewing;
 

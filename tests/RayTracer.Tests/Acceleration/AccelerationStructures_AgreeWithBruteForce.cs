@@ -2,7 +2,9 @@ using RayTracer.Acceleration;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Meshes;
 using RayTracer.Geometry.Universal;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Randomness;
+using RayTracer.Tracing;
 
 namespace RayTracer.Tests.Acceleration;
 

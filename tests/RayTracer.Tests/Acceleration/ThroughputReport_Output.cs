@@ -1,6 +1,7 @@
 using RayTracer.Acceleration;
 using RayTracer.Geometry.Meshes;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Tracing;
 
 namespace RayTracer.Tests.Acceleration;
 

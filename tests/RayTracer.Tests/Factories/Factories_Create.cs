@@ -1,8 +1,10 @@
+using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Lights;
 using RayTracer.Materials;
+using RayTracer.Maths;
 using RayTracer.Scenes;
-using RayTracer.Util;
+using RayTracer.Tracing;
 using RayTracer.Viewing;
 
 namespace RayTracer.Tests.Factories;

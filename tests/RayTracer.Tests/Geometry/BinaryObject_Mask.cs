@@ -1,6 +1,7 @@
 using RayTracer.Geometry;
 using RayTracer.Geometry.Universal;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Tracing;
 
 namespace RayTracer.Tests.Geometry;
 

@@ -1,4 +1,6 @@
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Randomness;
+using RayTracer.Tracing;
 
 namespace RayTracer.Tests.Geometry;
 

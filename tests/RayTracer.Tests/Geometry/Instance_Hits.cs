@@ -1,6 +1,9 @@
+using RayTracer.Bounds;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Universal;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Randomness;
+using RayTracer.Tracing;
 
 namespace RayTracer.Tests.Geometry;
 

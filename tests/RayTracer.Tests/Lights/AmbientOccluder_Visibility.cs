@@ -1,10 +1,11 @@
+using RayTracer.Colors;
 using RayTracer.Geometry.Universal;
 using RayTracer.Lights;
 using RayTracer.Materials;
+using RayTracer.Maths;
 using RayTracer.Sampling;
 using RayTracer.Tests.Tracing;
 using RayTracer.Tracing;
-using RayTracer.Util;
 using RayTracer.Viewing;
 
 namespace RayTracer.Tests.Lights;

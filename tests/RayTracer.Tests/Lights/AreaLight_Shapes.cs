@@ -1,9 +1,10 @@
+using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry.Universal;
 using RayTracer.Materials;
+using RayTracer.Maths;
 using RayTracer.Tests.Tracing;
 using RayTracer.Tracing;
-using RayTracer.Util;
 using RayTracer.Viewing;
 
 namespace RayTracer.Tests.Lights;
@@ -48,6 +49,22 @@ public class AreaLight_Shapes
         const double radius = 0.5, distance = 2.0;
         var value = RenderFloorUnder(world => LightFactory.AddSphereLight(world, new Point3D(0, 0, distance), radius, Le));
         var expected = Kd * Le * radius * radius / (distance * distance);
+        Assert.InRange(value, expected * 0.99, expected * 1.01);
+    }
+
+    [Fact]
+    public void Two_triangle_lights_covering_a_rectangle_match_its_configuration_factor()
+    {
+        // The same 2×1 panel as above, split along a diagonal into two triangle lights facing down.
+        var corner = new Point3D(-1, -0.5, 1);
+        var a = new Vector3D(0, 1, 0);
+        var b = new Vector3D(2, 0, 0);
+        var value = RenderFloorUnder(world =>
+        {
+            LightFactory.AddAreaLight(world, new Triangle(corner, corner + a, corner + b), Le);
+            LightFactory.AddAreaLight(world, new Triangle(corner + a + b, corner + b, corner + a), Le);
+        });
+        var expected = Kd * Le * 4 * CornerFactor(1, 0.5, 1);
         Assert.InRange(value, expected * 0.99, expected * 1.01);
     }
 }

@@ -1,7 +1,9 @@
 using RayTracer.BRDFs;
 using RayTracer.BTDFs;
+using RayTracer.Colors;
 using RayTracer.Materials;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Tracing;
 
 namespace RayTracer.Tests.Materials;
 

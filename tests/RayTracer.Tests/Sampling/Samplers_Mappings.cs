@@ -1,3 +1,4 @@
+using RayTracer.Maths;
 using RayTracer.Sampling;
 
 namespace RayTracer.Tests.Sampling;
@@ -23,9 +24,9 @@ public class Samplers_Mappings
     [Fact]
     public void Concentric_map_sends_square_corners_and_edges_to_the_circle()
     {
-        var corner = Sampler.ConcentricDisk(new RayTracer.Util.Point2D(1, 1));
+        var corner = Sampler.ConcentricDisk(new Point2D(1, 1));
         Assert.Equal(1.0, Math.Sqrt(corner.x * corner.x + corner.y * corner.y), 12);
-        var centre = Sampler.ConcentricDisk(new RayTracer.Util.Point2D(0.5, 0.5));
+        var centre = Sampler.ConcentricDisk(new Point2D(0.5, 0.5));
         Assert.Equal(0.0, centre.x, 15);
         Assert.Equal(0.0, centre.y, 15);
     }

@@ -1,5 +1,5 @@
+using RayTracer.Maths;
 using RayTracer.Sampling;
-using RayTracer.Util;
 
 namespace RayTracer.Tests.Sampling;
 

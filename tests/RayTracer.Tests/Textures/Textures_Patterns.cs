@@ -1,3 +1,5 @@
+using RayTracer.Colors;
+using RayTracer.Maths;
 using RayTracer.Textures;
 using RayTracer.Textures.Conversions;
 using RayTracer.Textures.Images;
@@ -5,7 +7,8 @@ using RayTracer.Textures.Mappings;
 using RayTracer.Textures.Noise;
 using RayTracer.Textures.Patterns;
 using RayTracer.Textures.Solid;
-using RayTracer.Util;
+using RayTracer.Tracing;
+using RayTracer.Transforms;
 using RayTracer.Viewing.Imaging;
 
 namespace RayTracer.Tests.Textures;

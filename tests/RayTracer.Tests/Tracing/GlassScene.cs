@@ -1,10 +1,11 @@
+using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry.Universal;
 using RayTracer.Lights;
 using RayTracer.Materials;
+using RayTracer.Maths;
 using RayTracer.Scenes;
 using RayTracer.Tracing;
-using RayTracer.Util;
 
 namespace RayTracer.Tests.Tracing;
 

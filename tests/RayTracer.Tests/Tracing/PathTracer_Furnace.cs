@@ -1,9 +1,10 @@
+using RayTracer.Colors;
 using RayTracer.Geometry.Universal;
 using RayTracer.Lights;
 using RayTracer.Materials;
+using RayTracer.Maths;
 using RayTracer.Sampling;
 using RayTracer.Tracing;
-using RayTracer.Util;
 using RayTracer.Viewing;
 
 namespace RayTracer.Tests.Tracing;

@@ -1,6 +1,6 @@
+using RayTracer.Maths;
 using RayTracer.Scenes;
 using RayTracer.Tracing;
-using RayTracer.Util;
 using RayTracer.Viewing;
 
 namespace RayTracer.Tests.Tracing;

@@ -1,8 +1,9 @@
+using RayTracer.Colors;
 using RayTracer.Geometry.Universal;
 using RayTracer.Lights;
 using RayTracer.Materials;
+using RayTracer.Maths;
 using RayTracer.Tracing;
-using RayTracer.Util;
 using RayTracer.Viewing;
 
 namespace RayTracer.Tests.Tracing;

@@ -1,4 +1,4 @@
-using RayTracer.Util;
+using RayTracer.Maths;
 using RayTracer.Viewing;
 
 namespace RayTracer.Tests.Viewing;

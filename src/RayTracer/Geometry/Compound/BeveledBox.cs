@@ -1,5 +1,5 @@
 using RayTracer.Geometry.Universal;
-using RayTracer.Util;
+using RayTracer.Maths;
 
 namespace RayTracer.Geometry.Compound;
 

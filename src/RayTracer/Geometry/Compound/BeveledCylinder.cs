@@ -1,6 +1,6 @@
 using RayTracer.Geometry.Generic;
 using RayTracer.Geometry.Universal;
-using RayTracer.Util;
+using RayTracer.Maths;
 
 namespace RayTracer.Geometry.Compound;
 

@@ -1,5 +1,6 @@
+using RayTracer.Bounds;
 using RayTracer.Materials;
-using RayTracer.Util;
+using RayTracer.Tracing;
 
 namespace RayTracer.Geometry.Compound;
 

@@ -1,4 +1,6 @@
-using RayTracer.Util;
+using RayTracer.Bounds;
+using RayTracer.Maths;
+using RayTracer.Textures;
 
 namespace RayTracer.Geometry.Generic;
 

@@ -1,4 +1,5 @@
-using RayTracer.Util;
+using RayTracer.Bounds;
+using RayTracer.Textures;
 
 namespace RayTracer.Geometry.Generic;
 

@@ -1,5 +1,7 @@
+using RayTracer.Bounds;
 using RayTracer.Geometry.Solvers;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Tracing;
 
 namespace RayTracer.Geometry.Generic;
 

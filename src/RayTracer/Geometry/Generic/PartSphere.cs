@@ -1,5 +1,8 @@
+using RayTracer.Bounds;
 using RayTracer.Geometry.Solvers;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Textures;
+using RayTracer.Tracing;
 
 namespace RayTracer.Geometry.Generic;
 

@@ -1,4 +1,7 @@
-using RayTracer.Util;
+using RayTracer.Bounds;
+using RayTracer.Kernels;
+using RayTracer.Maths;
+using RayTracer.Textures;
 
 namespace RayTracer.Geometry.Meshes;
 
@@ -79,7 +82,7 @@ public sealed class Mesh : ObjectNature
         {
             int a = Indices[3 * f], b = Indices[3 * f + 1], c = Indices[3 * f + 2];
             // The cross product's length is twice the area, which gives the weighting for free.
-            Vector3D n = Vector3D.Cross(Vertices[b] - Vertices[a], Vertices[c] - Vertices[a]);
+            var n = TriangleNormal.Of(Vertices[a], Vertices[b], Vertices[c]);
             sums[a] += n;
             sums[b] += n;
             sums[c] += n;

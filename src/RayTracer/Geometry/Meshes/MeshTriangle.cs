@@ -1,6 +1,10 @@
+using RayTracer.Bounds;
 using RayTracer.Geometry.Solvers;
+using RayTracer.Kernels;
 using RayTracer.Materials;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Textures;
+using RayTracer.Tracing;
 
 namespace RayTracer.Geometry.Meshes;
 
@@ -94,7 +98,7 @@ public sealed class MeshTriangle : GeometricObject, ITriangle
         }
         else
         {
-            n = new Normal3D(Vector3D.Cross(e1, e2));
+            n = TriangleNormal.OfEdges(e1, e2);
         }
 
         sr.Normal = n.Normalized();

@@ -1,7 +1,8 @@
 using System.Buffers.Binary;
 using System.Globalization;
 using System.Text;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Textures;
 
 namespace RayTracer.Geometry.Meshes;
 

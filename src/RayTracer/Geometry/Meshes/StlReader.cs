@@ -1,7 +1,7 @@
 using System.Buffers.Binary;
 using System.Globalization;
 using System.Text;
-using RayTracer.Util;
+using RayTracer.Maths;
 
 namespace RayTracer.Geometry.Meshes;
 

@@ -1,6 +1,8 @@
 using System.Buffers.Binary;
 using System.Globalization;
 using System.Text;
+using RayTracer.Kernels;
+using RayTracer.Maths;
 using RayTracer.Util;
 using SafeFiles;
 
@@ -34,7 +36,7 @@ public static class StlWriter
         a = mesh.Vertices[mesh.Indices[3 * f]];
         b = mesh.Vertices[mesh.Indices[3 * f + 1]];
         c = mesh.Vertices[mesh.Indices[3 * f + 2]];
-        Vector3D n = Vector3D.Cross(b - a, c - a);
+        var n = TriangleNormal.Of(a, b, c).ToVector();
         double len = n.Length;
         return len > 0 ? n / len : Vector3D.Zero;
     }

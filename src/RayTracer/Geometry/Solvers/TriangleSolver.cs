@@ -1,5 +1,6 @@
 using System.Runtime.CompilerServices;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Tracing;
 
 namespace RayTracer.Geometry.Solvers;
 

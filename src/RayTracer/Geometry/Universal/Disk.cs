@@ -1,9 +1,12 @@
-using RayTracer.Util;
+using RayTracer.Bounds;
+using RayTracer.Maths;
+using RayTracer.Textures;
+using RayTracer.Tracing;
 
 namespace RayTracer.Geometry.Universal;
 
 /// <summary>Flat disk with any center, orientation and radius; one-sided normal as given.</summary>
-public sealed class Disk : GeometricObject
+public sealed class Disk : GeometricObject, ISampledShape
 {
     private readonly OrthonormalBasis _frame;
 
@@ -73,14 +76,14 @@ public sealed class Disk : GeometricObject
     }
 
     /// <summary>Uniform over the area: radius ∝ sqrt(u).</summary>
-    public override Point3D Sample(Point2D u)
+    public Point3D Sample(Point2D u)
     {
         double r = Radius * Math.Sqrt(u.x);
         double phi = MathConstants.TwoPi * u.y;
         return Center + _frame.ToWorld(r * Math.Cos(phi), r * Math.Sin(phi), 0);
     }
 
-    public override double Pdf(ShadingRecord sr) => 1.0 / (Math.PI * Radius * Radius);
+    public double Pdf(ShadingRecord sr) => 1.0 / (Math.PI * Radius * Radius);
 
-    public override Normal3D GetNormal(Point3D p) => Normal;
+    public Normal3D GetNormal(Point3D p) => Normal;
 }

@@ -1,4 +1,6 @@
-using RayTracer.Util;
+using RayTracer.Bounds;
+using RayTracer.Maths;
+using RayTracer.Tracing;
 
 namespace RayTracer.Geometry.Universal;
 

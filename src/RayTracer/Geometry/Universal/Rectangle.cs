@@ -1,9 +1,12 @@
-using RayTracer.Util;
+using RayTracer.Bounds;
+using RayTracer.Maths;
+using RayTracer.Textures;
+using RayTracer.Tracing;
 
 namespace RayTracer.Geometry.Universal;
 
 /// <summary>Parallelogram p0 + u a + v b, u, v ∈ [0, 1], with normal along a × b.</summary>
-public sealed class Rectangle : GeometricObject
+public sealed class Rectangle : GeometricObject, ISampledShape
 {
     private readonly double _aLengthSquared;
     private readonly double _bLengthSquared;
@@ -70,11 +73,11 @@ public sealed class Rectangle : GeometricObject
         return box.Expanded(1e-9);
     }
 
-    public override Point3D Sample(Point2D u) => Corner + u.x * A + u.y * B;
+    public Point3D Sample(Point2D u) => Corner + u.x * A + u.y * B;
 
-    public override double Pdf(ShadingRecord sr) => 1.0 / Area;
+    public double Pdf(ShadingRecord sr) => 1.0 / Area;
 
-    public override Normal3D GetNormal(Point3D p) => Normal;
+    public Normal3D GetNormal(Point3D p) => Normal;
 
     private bool Solve(in Ray ray, out double t, out double u, out double v)
     {

@@ -1,10 +1,13 @@
+using RayTracer.Bounds;
 using RayTracer.Geometry.Solvers;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Textures;
+using RayTracer.Tracing;
 
 namespace RayTracer.Geometry.Universal;
 
 /// <summary>Sphere with any center and radius. Normals point outward, also for rays starting inside.</summary>
-public sealed class Sphere : GeometricObject
+public sealed class Sphere : GeometricObject, ISampledShape
 {
     public Sphere(Point3D center, double radius)
     {
@@ -43,7 +46,7 @@ public sealed class Sphere : GeometricObject
     public override BoundingBox GetBoundingBox() => new(Center - new Vector3D(Radius), Center + new Vector3D(Radius));
 
     /// <summary>Uniform on the surface: z uniform in [-1, 1] (Archimedes), azimuth uniform.</summary>
-    public override Point3D Sample(Point2D u)
+    public Point3D Sample(Point2D u)
     {
         double z = 1 - 2 * u.x;
         double r = Math.Sqrt(Math.Max(0, 1 - z * z));
@@ -51,9 +54,9 @@ public sealed class Sphere : GeometricObject
         return Center + Radius * new Vector3D(r * Math.Cos(phi), r * Math.Sin(phi), z);
     }
 
-    public override double Pdf(ShadingRecord sr) => 1.0 / (4 * Math.PI * Radius * Radius);
+    public double Pdf(ShadingRecord sr) => 1.0 / (4 * Math.PI * Radius * Radius);
 
-    public override Normal3D GetNormal(Point3D p) => new Normal3D(p - Center).Normalized();
+    public Normal3D GetNormal(Point3D p) => new Normal3D(p - Center).Normalized();
 
     /// <summary>u from the azimuth about +y measured from +z, v from the pole angle (1 at +y), as in Suffern's spherical map.</summary>
     internal static TextureCoordinates SphericalCoordinates(Normal3D n)

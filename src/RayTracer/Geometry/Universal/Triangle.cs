@@ -1,10 +1,14 @@
+using RayTracer.Bounds;
 using RayTracer.Geometry.Solvers;
-using RayTracer.Util;
+using RayTracer.Kernels;
+using RayTracer.Maths;
+using RayTracer.Textures;
+using RayTracer.Tracing;
 
 namespace RayTracer.Geometry.Universal;
 
-/// <summary>Stand-alone flat triangle; normal along (v1 - v0) × (v2 - v0).</summary>
-public sealed class Triangle : GeometricObject, ITriangle
+/// <summary>Stand-alone flat triangle; normal along (v1 − v0) × (v2 − v0), from the generated <see cref="TriangleNormal"/> kernel.</summary>
+public sealed class Triangle : GeometricObject, ITriangle, ISampledShape
 {
     private readonly Vector3D _e1;
     private readonly Vector3D _e2;
@@ -16,9 +20,9 @@ public sealed class Triangle : GeometricObject, ITriangle
         V2 = v2;
         _e1 = v1 - v0;
         _e2 = v2 - v0;
-        Vector3D n = Vector3D.Cross(_e1, _e2);
+        var n = TriangleNormal.OfEdges(_e1, _e2);
         Area = 0.5 * n.Length;
-        Normal = Area > 0 ? new Normal3D(n.Normalized()) : default;
+        Normal = Area > 0 ? n.Normalized() : default;
     }
 
     public Point3D V0 { get; }
@@ -58,13 +62,13 @@ public sealed class Triangle : GeometricObject, ITriangle
     }
 
     /// <summary>Uniform over the area (square-root warp of the unit square).</summary>
-    public override Point3D Sample(Point2D u)
+    public Point3D Sample(Point2D u)
     {
         double s = Math.Sqrt(u.x);
         return V0 + (s * (1 - u.y)) * _e1 + (s * u.y) * _e2;
     }
 
-    public override double Pdf(ShadingRecord sr) => 1.0 / Area;
+    public double Pdf(ShadingRecord sr) => 1.0 / Area;
 
-    public override Normal3D GetNormal(Point3D p) => Normal;
+    public Normal3D GetNormal(Point3D p) => Normal;
 }

@@ -1,7 +1,7 @@
 using RayTracer.Factories;
+using RayTracer.Maths;
 using RayTracer.Scenes.Showcase;
 using RayTracer.Tracing;
-using RayTracer.Util;
 
 namespace RayTracer.Scenes.Cameras;
 

@@ -1,4 +1,5 @@
 using RayTracer.Factories;
+using RayTracer.Maths;
 using RayTracer.Scenes.Showcase;
 using RayTracer.Tracing;
 
@@ -14,7 +15,7 @@ public sealed class ThinLensScene : ShowcaseScene
     protected override void Populate(World world)
     {
         AddContent(world);
-        var focus = ViewEye.Distance(new Util.Point3D(0, 1, -0.8));
+        var focus = ViewEye.Distance(new Point3D(0, 1, -0.8));
         world.Camera = CameraFactory.ThinLens(ViewEye, ViewTarget, 55, focus, 0.25, world.ViewPlane);
         world.Tracer = new WhittedTracer(world);
     }

@@ -1,5 +1,5 @@
+using RayTracer.Colors;
 using RayTracer.Factories;
-using RayTracer.Util;
 
 namespace RayTracer.Scenes.Lighting;
 

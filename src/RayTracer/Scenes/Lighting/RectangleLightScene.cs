@@ -1,6 +1,6 @@
 using RayTracer.Factories;
 using RayTracer.Lights;
-using RayTracer.Util;
+using RayTracer.Maths;
 
 namespace RayTracer.Scenes.Lighting;
 

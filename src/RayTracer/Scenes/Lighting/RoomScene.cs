@@ -1,9 +1,10 @@
+using RayTracer.Colors;
 using RayTracer.Factories;
+using RayTracer.Geometry;
 using RayTracer.Geometry.Generic;
 using RayTracer.Geometry.Universal;
-using RayTracer.Geometry;
+using RayTracer.Maths;
 using RayTracer.Tracing;
-using RayTracer.Util;
 
 namespace RayTracer.Scenes.Lighting;
 

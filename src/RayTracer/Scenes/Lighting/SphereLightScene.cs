@@ -1,6 +1,7 @@
+using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Lights;
-using RayTracer.Util;
+using RayTracer.Maths;
 
 namespace RayTracer.Scenes.Lighting;
 

@@ -1,13 +1,15 @@
 using System.Globalization;
 using System.Text;
 using RayTracer.Acceleration;
+using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Meshes;
 using RayTracer.Geometry.Universal;
+using RayTracer.Kernels;
 using RayTracer.Lights;
+using RayTracer.Maths;
 using RayTracer.Tracing;
-using RayTracer.Util;
 
 namespace RayTracer.Scenes.Meshes;
 
@@ -58,7 +60,7 @@ public sealed class MeshesScene : SceneDescription
         for (var i = 0; i + 2 < indices.Length; i += 3)
         {
             Point3D a = mesh.Vertices[indices[i]], b = mesh.Vertices[indices[i + 1]], c = mesh.Vertices[indices[i + 2]];
-            var normal = (b - a).Cross(c - a);
+            var normal = TriangleNormal.Of(a, b, c);
             var centre = (a.ToVector() + b.ToVector() + c.ToVector()) / 3;
             if (normal.Dot(centre) < 0)
                 (indices[i + 1], indices[i + 2]) = (indices[i + 2], indices[i + 1]);

@@ -1,11 +1,12 @@
+using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Compound;
 using RayTracer.Geometry.Csg;
 using RayTracer.Geometry.Universal;
 using RayTracer.Lights;
+using RayTracer.Maths;
 using RayTracer.Tracing;
-using RayTracer.Util;
 
 namespace RayTracer.Scenes.Primitives;
 

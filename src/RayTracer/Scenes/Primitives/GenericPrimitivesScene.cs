@@ -1,10 +1,11 @@
+using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Generic;
 using RayTracer.Geometry.Universal;
 using RayTracer.Lights;
+using RayTracer.Maths;
 using RayTracer.Tracing;
-using RayTracer.Util;
 
 namespace RayTracer.Scenes.Primitives;
 

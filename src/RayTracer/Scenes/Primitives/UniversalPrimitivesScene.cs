@@ -1,8 +1,9 @@
+using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry.Universal;
 using RayTracer.Lights;
+using RayTracer.Maths;
 using RayTracer.Tracing;
-using RayTracer.Util;
 
 namespace RayTracer.Scenes.Primitives;
 

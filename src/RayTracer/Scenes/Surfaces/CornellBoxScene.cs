@@ -1,9 +1,10 @@
+using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Universal;
 using RayTracer.Materials;
+using RayTracer.Maths;
 using RayTracer.Tracing;
-using RayTracer.Util;
 
 namespace RayTracer.Scenes.Surfaces;
 

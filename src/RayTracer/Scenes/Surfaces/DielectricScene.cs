@@ -1,5 +1,5 @@
+using RayTracer.Colors;
 using RayTracer.Materials;
-using RayTracer.Util;
 
 namespace RayTracer.Scenes.Surfaces;
 

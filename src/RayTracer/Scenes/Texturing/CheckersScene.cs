@@ -1,12 +1,13 @@
+using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Universal;
 using RayTracer.Lights;
+using RayTracer.Maths;
 using RayTracer.Textures.Conversions;
 using RayTracer.Textures.Mappings;
 using RayTracer.Textures.Patterns;
 using RayTracer.Tracing;
-using RayTracer.Util;
 
 namespace RayTracer.Scenes.Texturing;
 

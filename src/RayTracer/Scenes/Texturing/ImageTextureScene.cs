@@ -1,12 +1,13 @@
+using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Generic;
 using RayTracer.Geometry.Universal;
 using RayTracer.Lights;
+using RayTracer.Maths;
 using RayTracer.Textures.Images;
 using RayTracer.Textures.Mappings;
 using RayTracer.Tracing;
-using RayTracer.Util;
 using RayTracer.Viewing.Imaging;
 
 namespace RayTracer.Scenes.Texturing;

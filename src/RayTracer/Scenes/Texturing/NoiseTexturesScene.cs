@@ -1,9 +1,10 @@
+using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry.Universal;
 using RayTracer.Lights;
+using RayTracer.Maths;
 using RayTracer.Textures.Solid;
 using RayTracer.Tracing;
-using RayTracer.Util;
 
 namespace RayTracer.Scenes.Texturing;
 

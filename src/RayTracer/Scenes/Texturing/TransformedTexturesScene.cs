@@ -1,9 +1,11 @@
+using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry.Universal;
 using RayTracer.Lights;
+using RayTracer.Maths;
 using RayTracer.Textures;
 using RayTracer.Tracing;
-using RayTracer.Util;
+using RayTracer.Transforms;
 
 namespace RayTracer.Scenes.Texturing;
 

@@ -1,4 +1,5 @@
-using RayTracer.Util;
+using RayTracer.Colors;
+using RayTracer.Tracing;
 
 namespace RayTracer.Textures.Conversions;
 

@@ -1,5 +1,5 @@
+using RayTracer.Maths;
 using RayTracer.Textures.Noise;
-using RayTracer.Util;
 
 namespace RayTracer.Textures.Solid;
 

@@ -1,5 +1,6 @@
+using RayTracer.Colors;
+using RayTracer.Maths;
 using RayTracer.Textures.Noise;
-using RayTracer.Util;
 
 namespace RayTracer.Textures.Solid;
 

@@ -1,6 +1,8 @@
 using RayTracer.Geometry.Compound;
 using RayTracer.Geometry.Universal;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Randomness;
+using RayTracer.Tracing;
 
 namespace RayTracer.Tests.Geometry.Compound;
 

@@ -2,7 +2,9 @@ using RayTracer.Geometry;
 using RayTracer.Geometry.Csg;
 using RayTracer.Geometry.Generic;
 using RayTracer.Geometry.Universal;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Randomness;
+using RayTracer.Tracing;
 
 namespace RayTracer.Tests.Geometry.Csg;
 

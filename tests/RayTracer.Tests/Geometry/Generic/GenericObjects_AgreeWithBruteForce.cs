@@ -1,6 +1,8 @@
 using RayTracer.Geometry;
 using RayTracer.Geometry.Generic;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Randomness;
+using RayTracer.Tracing;
 
 namespace RayTracer.Tests.Geometry.Generic;
 

@@ -1,5 +1,7 @@
 using RayTracer.Geometry.Meshes;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Randomness;
+using RayTracer.Textures;
 
 namespace RayTracer.Tests.Geometry.Meshes;
 

@@ -1,5 +1,6 @@
 using RayTracer.Geometry.Meshes;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Tracing;
 
 namespace RayTracer.Tests.Geometry.Meshes;
 

@@ -1,5 +1,5 @@
 using RayTracer.Geometry.Solvers;
-using RayTracer.Util;
+using RayTracer.Randomness;
 
 namespace RayTracer.Tests.Geometry.Solvers;
 

@@ -1,5 +1,7 @@
 using RayTracer.Geometry.Universal;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Randomness;
+using RayTracer.Tracing;
 
 namespace RayTracer.Tests.Geometry.Universal;
 

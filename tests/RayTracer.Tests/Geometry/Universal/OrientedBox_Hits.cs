@@ -1,6 +1,10 @@
+using RayTracer.Bounds;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Universal;
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Randomness;
+using RayTracer.Tracing;
+using RayTracer.Transforms;
 
 namespace RayTracer.Tests.Geometry.Universal;
 

@@ -1,4 +1,4 @@
-namespace RayTracer.Util;
+namespace RayTracer.Maths;
 
 /// <summary>Right-handed orthonormal frame (u, v, w) built around a given w.</summary>
 public readonly struct OrthonormalBasis

@@ -1,7 +1,7 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
 
-namespace RayTracer.Util;
+namespace RayTracer.Randomness;
 
 /// <summary>
 /// Deterministic xoshiro256** generator. A stream is fixed by (seed, stream index), so renderers

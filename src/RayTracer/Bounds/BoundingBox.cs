@@ -1,6 +1,8 @@
 using System.Runtime.CompilerServices;
+using RayTracer.Maths;
+using RayTracer.Tracing;
 
-namespace RayTracer.Util;
+namespace RayTracer.Bounds;
 
 /// <summary>An axis-aligned box [Min, Max]. Empty boxes have Min &gt; Max.</summary>
 public struct BoundingBox

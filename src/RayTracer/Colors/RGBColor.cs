@@ -1,4 +1,4 @@
-namespace RayTracer.Util;
+namespace RayTracer.Colors;
 
 /// <summary>Linear RGB radiance or reflectance.</summary>
 public struct RGBColor : IEquatable<RGBColor>

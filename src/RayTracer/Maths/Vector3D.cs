@@ -1,6 +1,6 @@
 using System.Runtime.CompilerServices;
 
-namespace RayTracer.Util;
+namespace RayTracer.Maths;
 
 /// <summary>A direction or displacement in 3D space.</summary>
 public struct Vector3D : IEquatable<Vector3D>

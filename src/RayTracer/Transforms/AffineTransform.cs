@@ -1,4 +1,8 @@
-namespace RayTracer.Util;
+using RayTracer.Bounds;
+using RayTracer.Maths;
+using RayTracer.Tracing;
+
+namespace RayTracer.Transforms;
 
 /// <summary>
 /// An invertible affine map of 3D space stored as a 4×4 matrix together with its inverse.

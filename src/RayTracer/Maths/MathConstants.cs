@@ -1,4 +1,4 @@
-namespace RayTracer.Util;
+namespace RayTracer.Maths;
 
 /// <summary>Numeric constants shared by intersection and sampling code.</summary>
 public static class MathConstants

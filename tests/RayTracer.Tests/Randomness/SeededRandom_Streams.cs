@@ -1,6 +1,6 @@
-using RayTracer.Util;
+using RayTracer.Randomness;
 
-namespace RayTracer.Tests.Util;
+namespace RayTracer.Tests.Randomness;
 
 public class SeededRandom_Streams
 {

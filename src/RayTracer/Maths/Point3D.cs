@@ -1,6 +1,6 @@
 using System.Runtime.CompilerServices;
 
-namespace RayTracer.Util;
+namespace RayTracer.Maths;
 
 /// <summary>A position in 3D space. Fields are lower-case x, y, z because generated bindings read them.</summary>
 public struct Point3D : IEquatable<Point3D>

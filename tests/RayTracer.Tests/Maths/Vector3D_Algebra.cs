@@ -1,6 +1,8 @@
-using RayTracer.Util;
+using RayTracer.Colors;
+using RayTracer.Maths;
+using RayTracer.Randomness;
 
-namespace RayTracer.Tests.Util;
+namespace RayTracer.Tests.Maths;
 
 public class Vector3D_Algebra
 {

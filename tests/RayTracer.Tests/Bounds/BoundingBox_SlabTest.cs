@@ -1,6 +1,9 @@
-using RayTracer.Util;
+using RayTracer.Bounds;
+using RayTracer.Maths;
+using RayTracer.Randomness;
+using RayTracer.Tracing;
 
-namespace RayTracer.Tests.Util;
+namespace RayTracer.Tests.Bounds;
 
 public class BoundingBox_SlabTest
 {

@@ -1,4 +1,4 @@
-namespace RayTracer.Util;
+namespace RayTracer.Maths;
 
 /// <summary>A point in 2D (sample positions, pixel coordinates).</summary>
 public struct Point2D : IEquatable<Point2D>

@@ -1,6 +1,8 @@
-using RayTracer.Util;
+using RayTracer.Maths;
+using RayTracer.Randomness;
+using RayTracer.Transforms;
 
-namespace RayTracer.Tests.Util;
+namespace RayTracer.Tests.Transforms;
 
 public class AffineTransform_Inverse
 {

@@ -1,6 +1,6 @@
 using System.Runtime.CompilerServices;
 
-namespace RayTracer.Util;
+namespace RayTracer.Maths;
 
 /// <summary>
 /// A surface normal. Kept distinct from <see cref="Vector3D"/> because affine maps transform

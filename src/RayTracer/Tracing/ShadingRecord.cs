@@ -1,7 +1,9 @@
 using RayTracer.Materials;
+using RayTracer.Maths;
 using RayTracer.Scenes;
+using RayTracer.Textures;
 
-namespace RayTracer.Util;
+namespace RayTracer.Tracing;
 
 /// <summary>
 /// Everything shading needs to know about the nearest hit along a ray. A class (not a struct)

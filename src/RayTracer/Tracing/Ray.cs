@@ -1,4 +1,6 @@
-namespace RayTracer.Util;
+using RayTracer.Maths;
+
+namespace RayTracer.Tracing;
 
 /// <summary>A ray o + t d. The direction is not required to be unit length.</summary>
 public struct Ray

@@ -1,4 +1,4 @@
-namespace RayTracer.Util;
+namespace RayTracer.Textures;
 
 /// <summary>Surface (u, v) coordinates of a hit, both usually in [0, 1].</summary>
 public struct TextureCoordinates
