@@ -1,7 +1,6 @@
 using System.Buffers.Binary;
 using System.Globalization;
 using System.Text;
-using RayTracer.Util;
 using SafeFiles;
 
 namespace RayTracer.Geometry.Meshes;

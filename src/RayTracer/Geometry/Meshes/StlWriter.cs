@@ -3,7 +3,6 @@ using System.Globalization;
 using System.Text;
 using RayTracer.Kernels;
 using RayTracer.Maths;
-using RayTracer.Util;
 using SafeFiles;
 
 namespace RayTracer.Geometry.Meshes;

@@ -1,7 +1,6 @@
 using System.Buffers.Binary;
 using System.IO.Compression;
 using System.Text;
-using RayTracer.Util;
 using SafeFiles;
 
 namespace RayTracer.Viewing.Imaging;
