@@ -186,7 +186,11 @@ internal sealed partial class Binder
     private Rational? EvaluateRational(ExprContext syntax, string what)
     {
         var bound = BindExpression(syntax, Scope.Constant);
-        if (bound is null) return null;
+        return bound is null ? null : Fold(bound, syntax, what);
+    }
+
+    private Rational? Fold(BoundExpression bound, ExprContext syntax, string what)
+    {
         if (Folding.TryFold(bound) is { } value) return value;
         _diagnostics.ReportInvalidScalar(Span(syntax), $"{what} must be an exact rational constant");
         return null;
@@ -385,7 +389,7 @@ internal sealed partial class Binder
     {
         var frame = cls.Frame;
         var variables = new List<int>();
-        var constants = new List<CoefficientValue>();
+        var constants = new List<ClassConstant>();
         cls.IsNormalized = syntax.NORMALIZED() is not null;
         foreach (var item in syntax.classItem())
         {
@@ -402,18 +406,22 @@ internal sealed partial class Binder
                     }
                     break;
                 case ConstantCoefficientItemContext c:
-                    if (BindBlade(c.bladeName(), frame) is { } blade && BindConstantScalar(c.expr()) is { } value)
-                        constants.Add(new CoefficientValue(blade, value));
+                    if (BindBlade(c.bladeName(), frame) is { } blade && BindClassConstant(c.expr()) is { } value)
+                        constants.Add(new ClassConstant(blade.Mask, blade.Sign < 0 ? -value : value));
                     break;
             }
         }
         // A constant coefficient fixes its blade; it is no longer a variable.
-        variables.RemoveAll(b => constants.Any(c => c.Blade.Mask == b));
+        variables.RemoveAll(b => constants.Any(c => c.Blade == b));
         cls.VariableBlades = variables;
         cls.ConstantCoefficients = constants;
     }
 
-    private BoundExpression? BindConstantScalar(ExprContext syntax)
+    /// <summary>
+    /// A class constant is folded here, once, so that every user of the class (symbolic inputs,
+    /// the numeric reference) sees the same exact value and none meets an expression it cannot fold.
+    /// </summary>
+    private Rational? BindClassConstant(ExprContext syntax)
     {
         var value = BindExpression(syntax, Scope.Constant);
         if (value is null) return null;
@@ -422,7 +430,7 @@ internal sealed partial class Binder
             _diagnostics.ReportInvalidScalar(Span(syntax), "a coefficient must be a scalar");
             return null;
         }
-        return value;
+        return Fold(value, syntax, "a class constant");
     }
 
     private void BindConstant(ConstantDefinitionContext syntax, ConstantSymbol constant) =>

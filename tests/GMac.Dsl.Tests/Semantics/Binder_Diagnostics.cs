@@ -122,6 +122,15 @@ public sealed class Binder_Diagnostics
     }
 
     [Fact]
+    public void Class_constant_that_is_not_an_exact_number_is_an_error()
+    {
+        // Generation used to read it as 0 (or throw); it is now refused where it is written.
+        var d = MarkedSource.AssertSingle(
+            "define multivector class e3d.Tilted as vectors; e1^e2 : «sqrt(2)» end multivector class", "GMAC0130", DslSnippets.E3d);
+        Assert.Equal("invalid scalar expression: a class constant must be an exact rational constant", d.Message);
+    }
+
+    [Fact]
     public void Singular_basis_change_of_a_frame_is_an_error()
     {
         var d = MarkedSource.AssertSingle("""
