@@ -72,6 +72,4 @@ public sealed class DslProject
             .ToList();
         return new DslProject(trees, model, diagnostics, watch.Elapsed);
     }
-
-    public static DslProject FromSource(string text, string path = "test.gmac") => FromSources([(path, text)]);
 }

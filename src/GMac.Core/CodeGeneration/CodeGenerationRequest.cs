@@ -6,6 +6,7 @@ namespace GMac.Core.CodeGeneration;
 /// Everything code generation needs for one binding point. <see cref="Evaluate"/> runs the macro
 /// symbolically; given a recorder it must pass every intermediate multivector through it
 /// (outside "join on" regions), and without one it yields fully expanded outputs.
+/// <see cref="CodeGenerator.Generate"/> calls it up to three times, once per form it compares.
 /// </summary>
 public sealed record CodeGenerationRequest(
     Func<TemporaryRecorder?, SymbolicProgram> Evaluate,

@@ -7,6 +7,15 @@ public static class CodeGenerator
 {
     private const int HopelessFactor = 3;
 
+    /// <summary>
+    /// Evaluates the macro once per candidate form and keeps the cheapest: up to three calls of
+    /// <see cref="CodeGenerationRequest.Evaluate"/> (split with every intermediate named, split with
+    /// whole statements named, joined), fewer when <see cref="CodeGenerationRequest.Join"/> fixes
+    /// the form. One evaluation cannot serve all three: a recorder names intermediate values while
+    /// the macro runs and later operations work on those names, so each form is a different
+    /// symbolic program. The callback is the only way back into the evaluating stage; the
+    /// recorders it is given are made here, with the simplifier built here.
+    /// </summary>
     public static CodeGenerationResult Generate(CodeGenerationRequest request)
     {
         request = request with { Simplify = EffectiveSimplifier(request.Simplify) };

@@ -54,16 +54,16 @@ public sealed class RationalMatrix : IEquatable<RationalMatrix>
 
     public bool IsSquare => Rows == Columns;
 
-    public bool IsSymmetric
+    public bool IsSymmetric => IsSquare && FirstAsymmetry() is null;
+
+    /// <summary>The first entry (row &lt; column, 0-based) that differs from its mirror, or null for a symmetric matrix.</summary>
+    public (int Row, int Column)? FirstAsymmetry()
     {
-        get
-        {
-            if (!IsSquare) return false;
-            for (var i = 0; i < Rows; i++)
-            for (var j = i + 1; j < Columns; j++)
-                if (_entries[i, j] != _entries[j, i]) return false;
-            return true;
-        }
+        RequireSquare("symmetry test");
+        for (var i = 0; i < Rows; i++)
+        for (var j = i + 1; j < Columns; j++)
+            if (_entries[i, j] != _entries[j, i]) return (i, j);
+        return null;
     }
 
     public bool IsDiagonal

@@ -200,8 +200,8 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
             {
                 var source = Frames[t.Transform.Source];
                 var map = Outermorphism<T>.FromMatrix(source, Frames[t.Transform.Destination],
-                    new Core.Numerics.RationalMatrix(t.Transform.VectorMatrix
-                        ?? throw new MacroEvaluationException(t.Span, $"transform '{t.Transform.Name}' has no matrix")));
+                    t.Transform.VectorMatrix
+                        ?? throw new MacroEvaluationException(t.Span, $"transform '{t.Transform.Name}' has no matrix"));
                 return new Value(T.Zero, map.Apply(Mv(t.Operand, context, source)));
             }
             case BoundMacroCall call:

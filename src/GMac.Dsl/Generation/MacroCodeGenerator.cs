@@ -118,7 +118,8 @@ public sealed partial class MacroCodeGenerator
             return null;
         }
 
-        var inputs = BuildInputs(macro, inputValues);
+        // A variable coefficient that no binding supplies is zero.
+        var inputs = MacroInputs.Build(_frames, SymbolicDomain.Instance, macro, (input, blade) => inputValues.GetValueOrDefault((input, blade), Scalar.Zero));
         var relations = MacroCompiler.NormalizationRelations(macro, inputs, SideRelations.Trigonometric);
         assumptions = assumptions.WithRelations(relations);
         var join = UsesDifferentiation(macro) ? JoinMode.Joined : UsesJoin(macro) ? JoinMode.Split : JoinMode.Automatic;
@@ -187,41 +188,12 @@ public sealed partial class MacroCodeGenerator
     [GeneratedRegex(@"<\s*[A-Za-z_][A-Za-z_0-9]*\s*\.\s*[A-Za-z_0-9^\s]+?\s*>")]
     private static partial Regex Placeholder();
 
-    private Dictionary<VariableSymbol, Multivector<Scalar>> BuildInputs(MacroSymbol macro, Dictionary<(VariableSymbol, int), Scalar> values)
-    {
-        var inputs = new Dictionary<VariableSymbol, Multivector<Scalar>>();
-        foreach (var input in macro.Inputs)
-        {
-            var frame = _frames[input.Class!.Frame];
-            var terms = input.Class.VariableBlades
-                .Select(b => (new BasisBlade(b), values.TryGetValue((input, b), out var v) ? v : Scalar.Zero))
-                .Concat(input.Class.ConstantCoefficients.Select(c =>
-                {
-                    var value = Folding.TryFold(c.Value) is { } r ? Scalar.Constant(r) : Scalar.Zero;
-                    return (new BasisBlade(c.Blade.Mask), c.Blade.Sign < 0 ? -value : value);
-                }));
-            inputs[input] = Multivector<Scalar>.FromTerms(frame, terms);
-        }
-        return inputs;
-    }
-
     /// <summary>The macro run on doubles: the independent reference that <c>gmac verify</c> checks generated code against.</summary>
     private IReadOnlyDictionary<string, double> NumericReference(MacroSymbol macro, Dictionary<(VariableSymbol, int), Scalar> inputValues,
         Dictionary<string, (VariableSymbol Parameter, int Blade, int Sign)> outputs, IReadOnlyDictionary<string, double> atomValues)
     {
-        var inputs = new Dictionary<VariableSymbol, Multivector<double>>();
-        foreach (var input in macro.Inputs)
-        {
-            var frame = _frames[input.Class!.Frame];
-            var terms = input.Class.VariableBlades
-                .Select(b => (new BasisBlade(b), inputValues.TryGetValue((input, b), out var v) ? v.Evaluate(atomValues) : 0.0))
-                .Concat(input.Class.ConstantCoefficients.Select(c =>
-                {
-                    var value = Folding.TryFold(c.Value) is { } r ? r.ToDouble() : 0.0;
-                    return (new BasisBlade(c.Blade.Mask), c.Blade.Sign < 0 ? -value : value);
-                }));
-            inputs[input] = Multivector<double>.FromTerms(frame, terms);
-        }
+        var inputs = MacroInputs.Build(_frames, DoubleDomain.Instance, macro, (input, blade) =>
+            inputValues.TryGetValue((input, blade), out var v) ? v.Evaluate(atomValues) : 0.0);
         var results = _numeric.Evaluate(macro, inputs);
         return outputs.ToDictionary(o => o.Key, o =>
         {

@@ -1,4 +1,5 @@
 using Antlr4.Runtime;
+using GMac.Core.Algebra;
 using GMac.Core.Numerics;
 using GMac.Dsl.Diagnostics;
 using static GMac.Dsl.Syntax.Generated.GMacDslParser;
@@ -33,7 +34,7 @@ internal sealed partial class Binder
             basis = basis.Take(MaxFrameDimension).ToList();
         }
         var frame = new FrameSymbol(name, Span(syntax.name()), basis);
-        frame.InnerProductMatrix = MatrixAlgebra.Identity(basis.Count);
+        frame.InnerProductMatrix = RationalMatrix.Identity(basis.Count);
         _frames[name] = frame;
         _frameBodies[frame] = (syntax.frameBody(), _file);
 
@@ -59,6 +60,16 @@ internal sealed partial class Binder
         var saved = _file;
         var (body, file) = _frameBodies[frame];
         _file = file;
+        BindFrameBody(frame, body);
+        _resolving.Remove(frame);
+        _resolvingPath.Remove(frame);
+        _resolved.Add(frame);
+        _file = saved;
+    }
+
+    /// <summary>Names and diagnostics for a frame body; the matrices come from <see cref="BasisChange"/>.</summary>
+    private void BindFrameBody(FrameSymbol frame, FrameBodyContext body)
+    {
         var n = frame.Dimension;
         switch (body)
         {
@@ -66,92 +77,77 @@ internal sealed partial class Binder
                 frame.Kind = FrameKind.Euclidean;
                 break;
             case SignatureFrameContext s:
-            {
                 frame.Kind = FrameKind.Signature;
-                var counts = s.expr().Select(e => EvaluateInteger(e, "a signature count")).ToList();
-                if (counts.Any(c => c is null)) break;
-                var (p, q, r) = (counts[0]!.Value, counts[1]!.Value, counts.Count > 2 ? counts[2]!.Value : 0);
-                if (p < 0 || q < 0 || r < 0 || p + q + r != n)
-                {
-                    _diagnostics.ReportInvalidDefinition(Span(s), $"signature ({p}, {q}, {r}) must count the {n} basis vectors of frame '{frame.Name}'");
-                    break;
-                }
-                var diag = Enumerable.Repeat(Rational.One, p).Concat(Enumerable.Repeat(Rational.MinusOne, q))
-                    .Concat(Enumerable.Repeat(Rational.Zero, r)).ToList();
-                frame.InnerProductMatrix = MatrixAlgebra.Diagonal(diag);
+                if (BindSignature(s, frame) is { } metric) frame.InnerProductMatrix = metric;
                 break;
-            }
             case IpmFrameContext ipm:
-            {
                 frame.Kind = FrameKind.InnerProductMatrix;
                 if (BindMatrix(ipm.matrix(), n, n) is not { } m) break;
-                if (!MatrixAlgebra.IsSymmetric(m, out var row, out var column))
-                {
+                if (m.FirstAsymmetry() is var (row, column))
                     _diagnostics.ReportNonSymmetricIpm(Span(ipm.matrix()), row + 1, column + 1);
-                    break;
-                }
-                frame.InnerProductMatrix = m;
+                else frame.InnerProductMatrix = m;
                 break;
-            }
             case OrthogonalizeFrameContext o:
-            {
                 frame.Kind = FrameKind.Orthogonalized;
-                if (LookupFrame(o.name()) is not { } source) break;
-                ResolveFrame(source);
-                if (!SameDimension(o, source, frame)) break;
-                var (bcm, ipm) = MatrixAlgebra.Orthogonalize(source.InnerProductMatrix);
-                frame.Source = source;
-                frame.BasisChangeMatrix = bcm;
-                frame.InnerProductMatrix = ipm;
+                if (SourceFrame(o.name(), frame, o) is not { } orthogonalized) break;
+                frame.Source = orthogonalized;
+                (frame.BasisChangeMatrix, frame.InnerProductMatrix) = BasisChange.Orthogonalize(orthogonalized.InnerProductMatrix);
                 break;
-            }
             case SubspaceFrameContext sub:
-            {
                 frame.Kind = FrameKind.SubspaceOf;
-                if (LookupFrame(sub.name()) is not { } source) break;
-                ResolveFrame(source);
-                var indices = new List<int>();
-                foreach (var b in frame.BasisNames)
-                {
-                    var i = source.IndexOfBasis(b);
-                    if (i < 0) ReportUnknown(Span(sub), $"basis vector of frame '{source.Name}'", b, source.BasisNames);
-                    indices.Add(i);
-                }
-                if (indices.Any(i => i < 0)) break;
-                var bcm = new Rational[n, source.Dimension];
-                var ipm = new Rational[n, n];
-                for (var i = 0; i < n; i++)
-                {
-                    bcm[i, indices[i]] = Rational.One;
-                    for (var j = 0; j < n; j++) ipm[i, j] = source.InnerProductMatrix[indices[i], indices[j]];
-                }
-                frame.Source = source;
-                frame.BasisChangeMatrix = bcm;
-                frame.InnerProductMatrix = ipm;
+                if (SourceFrame(sub.name(), frame, null) is not { } whole || BindSubspaceIndices(sub, frame, whole) is not { } indices) break;
+                Derive(frame, whole, BasisChange.Selection(whole.Dimension, indices));
                 break;
-            }
             case TransformedFrameContext t:
-            {
                 frame.Kind = FrameKind.TransformedByBcm;
-                if (LookupFrame(t.name()) is not { } source) break;
-                ResolveFrame(source);
-                if (!SameDimension(t, source, frame)) break;
-                if (BindMatrix(t.matrix(), n, n) is not { } bcm) break;
-                if (MatrixAlgebra.Inverse(bcm) is null)
-                {
-                    _diagnostics.ReportInvalidDefinition(Span(t.matrix()), "basis change matrix is singular");
-                    break;
-                }
-                frame.Source = source;
-                frame.BasisChangeMatrix = bcm;
-                frame.InnerProductMatrix = MatrixAlgebra.Multiply(MatrixAlgebra.Multiply(bcm, source.InnerProductMatrix), MatrixAlgebra.Transpose(bcm));
+                if (SourceFrame(t.name(), frame, t) is not { } transformed || BindMatrix(t.matrix(), n, n) is not { } bcm) break;
+                if (bcm.TryInverse(out _)) Derive(frame, transformed, bcm);
+                else _diagnostics.ReportInvalidDefinition(Span(t.matrix()), "basis change matrix is singular");
                 break;
-            }
         }
-        _resolving.Remove(frame);
-        _resolvingPath.Remove(frame);
-        _resolved.Add(frame);
-        _file = saved;
+    }
+
+    /// <summary>The resolved frame a derived frame is built on; with <paramref name="sameDimensionAt"/>, it must match in dimension.</summary>
+    private FrameSymbol? SourceFrame(NameContext name, FrameSymbol frame, ParserRuleContext? sameDimensionAt)
+    {
+        if (LookupFrame(name) is not { } source) return null;
+        ResolveFrame(source);
+        return sameDimensionAt is null || SameDimension(sameDimensionAt, source, frame) ? source : null;
+    }
+
+    private static void Derive(FrameSymbol frame, FrameSymbol source, RationalMatrix basisChange)
+    {
+        frame.Source = source;
+        frame.BasisChangeMatrix = basisChange;
+        frame.InnerProductMatrix = BasisChange.DerivedMetric(source.InnerProductMatrix, basisChange);
+    }
+
+    private RationalMatrix? BindSignature(SignatureFrameContext s, FrameSymbol frame)
+    {
+        var n = frame.Dimension;
+        var counts = s.expr().Select(e => EvaluateInteger(e, "a signature count")).ToList();
+        if (counts.Any(c => c is null)) return null;
+        var (p, q, r) = (counts[0]!.Value, counts[1]!.Value, counts.Count > 2 ? counts[2]!.Value : 0);
+        if (p < 0 || q < 0 || r < 0 || p + q + r != n)
+        {
+            _diagnostics.ReportInvalidDefinition(Span(s), $"signature ({p}, {q}, {r}) must count the {n} basis vectors of frame '{frame.Name}'");
+            return null;
+        }
+        return RationalMatrix.Diagonal(Enumerable.Repeat(Rational.One, p).Concat(Enumerable.Repeat(Rational.MinusOne, q))
+            .Concat(Enumerable.Repeat(Rational.Zero, r)).ToList());
+    }
+
+    /// <summary>The position in <paramref name="whole"/> of each basis vector of the subspace frame, or null after reporting unknown ones.</summary>
+    private List<int>? BindSubspaceIndices(SubspaceFrameContext sub, FrameSymbol frame, FrameSymbol whole)
+    {
+        var indices = new List<int>();
+        foreach (var b in frame.BasisNames)
+        {
+            var i = whole.IndexOfBasis(b);
+            if (i < 0) ReportUnknown(Span(sub), $"basis vector of frame '{whole.Name}'", b, whole.BasisNames);
+            indices.Add(i);
+        }
+        return indices.Any(i => i < 0) ? null : indices;
     }
 
     private string CyclePath(Symbol repeated) =>
@@ -166,7 +162,7 @@ internal sealed partial class Binder
     }
 
     /// <summary>A matrix of exact rational constants of the expected size.</summary>
-    private Rational[,]? BindMatrix(MatrixContext matrix, int rows, int columns)
+    private RationalMatrix? BindMatrix(MatrixContext matrix, int rows, int columns)
     {
         var rowSyntax = matrix.matrixRow();
         var width = rowSyntax.Max(r => r.expr().Length);
@@ -184,13 +180,17 @@ internal sealed partial class Binder
             if (value is null) ok = false;
             else m[i, j] = value.Value;
         }
-        return ok ? m : null;
+        return ok ? new RationalMatrix(m) : null;
     }
 
     private Rational? EvaluateRational(ExprContext syntax, string what)
     {
         var bound = BindExpression(syntax, Scope.Constant);
-        if (bound is null) return null;
+        return bound is null ? null : Fold(bound, syntax, what);
+    }
+
+    private Rational? Fold(BoundExpression bound, ExprContext syntax, string what)
+    {
         if (Folding.TryFold(bound) is { } value) return value;
         _diagnostics.ReportInvalidScalar(Span(syntax), $"{what} must be an exact rational constant");
         return null;
@@ -246,7 +246,7 @@ internal sealed partial class Binder
             case IdentityTransformContext i:
                 transform.Kind = TransformKind.Identity;
                 if (CheckDimensions(i, transform, dst.Dimension, src.Dimension))
-                    transform.VectorMatrix = MatrixAlgebra.Identity(src.Dimension);
+                    transform.VectorMatrix = RationalMatrix.Identity(src.Dimension);
                 break;
             case AliasTransformContext a:
                 transform.Kind = TransformKind.AliasOf;
@@ -257,22 +257,21 @@ internal sealed partial class Binder
                 transform.Kind = TransformKind.InverseOf;
                 if (Based(inv.name(), transform) is { } x && CheckFrames(inv, transform, x.Destination, x.Source) && x.VectorMatrix is { } m)
                 {
-                    transform.VectorMatrix = MatrixAlgebra.Inverse(m);
-                    if (transform.VectorMatrix is null) _diagnostics.ReportNotInvertible(Span(inv.name()), x.Name);
+                    if (m.TryInverse(out var inverse)) transform.VectorMatrix = inverse;
+                    else _diagnostics.ReportNotInvertible(Span(inv.name()), x.Name);
                 }
                 break;
             case TransposeTransformContext tr:
                 transform.Kind = TransformKind.TransposeOf;
                 if (Based(tr.name(), transform) is { } y && CheckFrames(tr, transform, y.Destination, y.Source) && y.VectorMatrix is { } my)
-                    transform.VectorMatrix = MatrixAlgebra.Transpose(my);
+                    transform.VectorMatrix = my.Transpose();
                 break;
             case InverseTransposeTransformContext it:
                 transform.Kind = TransformKind.InverseTransposeOf;
                 if (Based(it.name(), transform) is { } z && CheckFrames(it, transform, z.Source, z.Destination) && z.VectorMatrix is { } mz)
                 {
-                    var inverse = MatrixAlgebra.Inverse(mz);
-                    if (inverse is null) _diagnostics.ReportNotInvertible(Span(it.name()), z.Name);
-                    else transform.VectorMatrix = MatrixAlgebra.Transpose(inverse);
+                    if (mz.TryInverse(out var inverse)) transform.VectorMatrix = inverse.Transpose();
+                    else _diagnostics.ReportNotInvertible(Span(it.name()), z.Name);
                 }
                 break;
             case BcmOutermorphismContext b:
@@ -287,7 +286,7 @@ internal sealed partial class Binder
                 }
                 // Column i: derived basis vector i written in the source frame.
                 if (CheckDimensions(b, transform, f.Source.Dimension, f.Dimension))
-                    transform.VectorMatrix = MatrixAlgebra.Transpose(f.BasisChangeMatrix);
+                    transform.VectorMatrix = f.BasisChangeMatrix.Transpose();
                 break;
             }
             case MatrixOutermorphismContext mo:
@@ -390,7 +389,7 @@ internal sealed partial class Binder
     {
         var frame = cls.Frame;
         var variables = new List<int>();
-        var constants = new List<CoefficientValue>();
+        var constants = new List<ClassConstant>();
         cls.IsNormalized = syntax.NORMALIZED() is not null;
         foreach (var item in syntax.classItem())
         {
@@ -407,18 +406,22 @@ internal sealed partial class Binder
                     }
                     break;
                 case ConstantCoefficientItemContext c:
-                    if (BindBlade(c.bladeName(), frame) is { } blade && BindConstantScalar(c.expr()) is { } value)
-                        constants.Add(new CoefficientValue(blade, value));
+                    if (BindBlade(c.bladeName(), frame) is { } blade && BindClassConstant(c.expr()) is { } value)
+                        constants.Add(new ClassConstant(blade.Mask, blade.Sign < 0 ? -value : value));
                     break;
             }
         }
         // A constant coefficient fixes its blade; it is no longer a variable.
-        variables.RemoveAll(b => constants.Any(c => c.Blade.Mask == b));
+        variables.RemoveAll(b => constants.Any(c => c.Blade == b));
         cls.VariableBlades = variables;
         cls.ConstantCoefficients = constants;
     }
 
-    private BoundExpression? BindConstantScalar(ExprContext syntax)
+    /// <summary>
+    /// A class constant is folded here, once, so that every user of the class (symbolic inputs,
+    /// the numeric reference) sees the same exact value and none meets an expression it cannot fold.
+    /// </summary>
+    private Rational? BindClassConstant(ExprContext syntax)
     {
         var value = BindExpression(syntax, Scope.Constant);
         if (value is null) return null;
@@ -427,7 +430,7 @@ internal sealed partial class Binder
             _diagnostics.ReportInvalidScalar(Span(syntax), "a coefficient must be a scalar");
             return null;
         }
-        return value;
+        return Fold(value, syntax, "a class constant");
     }
 
     private void BindConstant(ConstantDefinitionContext syntax, ConstantSymbol constant) =>

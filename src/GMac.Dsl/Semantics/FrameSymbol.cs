@@ -14,9 +14,9 @@ public sealed class FrameSymbol(string name, SourceSpan declaration, IReadOnlyLi
     public IReadOnlyList<string> BasisNames { get; } = basisNames;
     public int Dimension => BasisNames.Count;
     public FrameKind Kind { get; internal set; }
-    public Rational[,] InnerProductMatrix { get; internal set; } = new Rational[0, 0];
+    public RationalMatrix InnerProductMatrix { get; internal set; } = RationalMatrix.Identity(0);
     public FrameSymbol? Source { get; internal set; }
-    public Rational[,]? BasisChangeMatrix { get; internal set; }
+    public RationalMatrix? BasisChangeMatrix { get; internal set; }
 
     internal Dictionary<string, Symbol> Members { get; } = new(StringComparer.Ordinal);
 

@@ -10,12 +10,12 @@ public sealed class MultivectorClassSymbol(string name, SourceSpan declaration, 
 {
     public FrameSymbol Frame { get; } = frame;
     public IReadOnlyList<int> VariableBlades { get; internal set; } = [];
-    public IReadOnlyList<CoefficientValue> ConstantCoefficients { get; internal set; } = [];
+    public IReadOnlyList<ClassConstant> ConstantCoefficients { get; internal set; } = [];
     public bool IsNormalized { get; internal set; }
     public bool IsImplicit { get; internal set; }
 
     /// <summary>Every blade that may be non-zero in a member of the class.</summary>
-    public IEnumerable<int> AllBlades => VariableBlades.Concat(ConstantCoefficients.Select(c => c.Blade.Mask)).Distinct();
+    public IEnumerable<int> AllBlades => VariableBlades.Concat(ConstantCoefficients.Select(c => c.Blade)).Distinct();
 
     public int GradeMask => AllBlades.Aggregate(0, (m, b) => m | (1 << System.Numerics.BitOperations.PopCount((uint)b)));
 

@@ -14,5 +14,5 @@ public sealed class TransformSymbol(string name, SourceSpan declaration) : Symbo
     public FrameSymbol Destination { get; internal set; } = null!;
     public TransformKind Kind { get; internal set; }
     public TransformSymbol? BasedOn { get; internal set; }
-    public Rational[,]? VectorMatrix { get; internal set; }
+    public RationalMatrix? VectorMatrix { get; internal set; }
 }

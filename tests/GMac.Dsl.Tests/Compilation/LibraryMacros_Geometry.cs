@@ -12,7 +12,7 @@ public sealed class LibraryMacros_Geometry
 
     private static Dictionary<string, Multivector<double>> Run(string macro, Dictionary<string, double> values)
     {
-        var outputs = new MacroCompiler(new CoreFrames()).Compile(Library.Value.Model.Macros[macro]);
+        var outputs = SymbolicMacro.Compile(Library.Value.Model.Macros[macro]);
         return outputs.ToDictionary(o => o.Key.Name, o => o.Value.Evaluate(values));
     }
 

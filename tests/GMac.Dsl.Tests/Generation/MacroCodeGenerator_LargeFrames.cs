@@ -1,5 +1,6 @@
 using GMac.Core.CodeGeneration;
 using GMac.Dsl.Generation;
+using GMac.Dsl.Tests.Support;
 
 namespace GMac.Dsl.Tests.Generation;
 
@@ -47,7 +48,7 @@ public sealed class MacroCodeGenerator_LargeFrames
     [Fact]
     public void Outer_product_and_norm_of_vectors_in_twelve_dimensions_generate_and_agree_with_the_numeric_engine()
     {
-        var generator = new MacroCodeGenerator(DslProject.FromSource(Frame(12)));
+        var generator = new MacroCodeGenerator(SingleFileProject.Bind(Frame(12)));
         var bindings = new List<BindingSpec>();
         for (var i = 1; i <= 12; i++)
         {
@@ -79,7 +80,7 @@ public sealed class MacroCodeGenerator_LargeFrames
     [Fact]
     public void Geometric_product_of_two_general_multivectors_in_twelve_dimensions_is_refused_at_the_statement()
     {
-        var generator = new MacroCodeGenerator(DslProject.FromSource(Frame(12)));
+        var generator = new MacroCodeGenerator(SingleFileProject.Bind(Frame(12)));
 
         var outcome = GenerateWithin(generator, "Everything", generator.DefaultBindings("Everything"));
 

@@ -80,4 +80,25 @@ public sealed class MacroCodeGenerator_UserErrors
         // The division "x / (x.<e1> - x.<e1>)" on line 16 of test.gmac, after "w = ".
         Assert.Equal(("test.gmac", 16, 13), (at.FilePath, at.Line, at.Column));
     }
+
+    [Fact]
+    public void Inverse_of_a_null_vector_is_reported_at_its_statement_in_the_dsl()
+    {
+        var project = DslProject.FromSources([
+            ("frames.gmac", File.ReadAllText(Path.Combine(RepositoryPaths.DslLibrary, "frames.gmac"))),
+            ("bad.gmac", """
+                define subspace cga5d.vectors as basis {no, e1, e2, e3, ni} end subspace
+                define multivector class cga5d.Vector as vectors end multivector class
+                define macro Bad as inputs: { x : cga5d.Vector } outputs: { y : cga5d.Vector } performs:
+                    y = x + inverse(cga5d.ni);
+                end macro
+                """)]);
+        Assert.Empty(project.Diagnostics);
+        var generator = new MacroCodeGenerator(project);
+        var outcome = generator.Generate("Bad", generator.DefaultBindings("Bad"), regionLine: 7);
+        var error = Assert.Single(outcome.Errors);
+        Assert.Equal(7, error.Line);
+        var at = Assert.IsType<Diagnostics.SourceSpan>(error.Source);
+        Assert.Equal(("bad.gmac", 4), (at.FilePath, at.Line));
+    }
 }

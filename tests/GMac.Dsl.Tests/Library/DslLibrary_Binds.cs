@@ -92,5 +92,5 @@ public sealed class DslLibrary_Binds
             .OfType<BoundAssignment>().First().Value.GetType().Name);
     }
 
-    private static Rational[] Row(Rational[,] m, int i) => Enumerable.Range(0, m.GetLength(1)).Select(j => m[i, j]).ToArray();
+    private static Rational[] Row(RationalMatrix m, int i) => Enumerable.Range(0, m.Columns).Select(j => m[i, j]).ToArray();
 }

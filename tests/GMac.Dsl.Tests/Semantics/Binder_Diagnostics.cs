@@ -122,6 +122,35 @@ public sealed class Binder_Diagnostics
     }
 
     [Fact]
+    public void Class_constant_that_is_not_an_exact_number_is_an_error()
+    {
+        // Generation used to read it as 0 (or throw); it is now refused where it is written.
+        var d = MarkedSource.AssertSingle(
+            "define multivector class e3d.Tilted as vectors; e1^e2 : «sqrt(2)» end multivector class", "GMAC0130", DslSnippets.E3d);
+        Assert.Equal("invalid scalar expression: a class constant must be an exact rational constant", d.Message);
+    }
+
+    [Fact]
+    public void Singular_basis_change_of_a_frame_is_an_error()
+    {
+        var d = MarkedSource.AssertSingle("""
+            define frame a as basis: {x, y} Euclidean end frame
+            define frame b as basis: {s, t} transform a by BCM = «{{1, 1}, {2, 2}}» end frame
+            """, "GMAC0124");
+        Assert.Equal("basis change matrix is singular", d.Message);
+    }
+
+    [Fact]
+    public void Orthogonalizing_a_frame_of_another_dimension_is_an_error()
+    {
+        var d = MarkedSource.AssertSingle("""
+            define frame a as basis: {x, y} Euclidean end frame
+            define frame b as basis: {s, t, u} «orthogonalize a» end frame
+            """, "GMAC0124");
+        Assert.Equal("frame 'b' has 3 basis vectors but 'a' has 2", d.Message);
+    }
+
+    [Fact]
     public void Invalid_scalar_expression_text_is_an_error()
     {
         var d = MarkedSource.AssertSingle("""
@@ -240,7 +269,7 @@ public sealed class Binder_Diagnostics
     public void Excessive_nesting_is_refused_before_parsing()
     {
         var text = "define frame a as basis: {x} IPM = {{" + new string('(', 300) + "1" + new string(')', 300) + "}} end frame";
-        var project = DslProject.FromSource(text);
+        var project = SingleFileProject.Bind(text);
         var d = Assert.Single(project.Diagnostics);
         Assert.Equal("GMAC0002", d.Code);
     }
@@ -248,7 +277,7 @@ public sealed class Binder_Diagnostics
     [Fact]
     public void Many_syntax_errors_are_reported_in_one_run()
     {
-        var project = DslProject.FromSource("""
+        var project = SingleFileProject.Bind("""
             define frame a as basis: {x y} Euclidean end frame
             define frame b as basis: {x} Euclidian end frame
             define macro M as inputs: { } outputs: { } performs: w = ; end macro
@@ -262,7 +291,7 @@ public sealed class Binder_Diagnostics
     [Fact]
     public void Diagnostics_print_in_msbuild_format()
     {
-        var project = DslProject.FromSource("define frame a as basis: {x} Euclidean end frame\ndefine frame a as basis: {x} Euclidean end frame");
+        var project = SingleFileProject.Bind("define frame a as basis: {x} Euclidean end frame\ndefine frame a as basis: {x} Euclidean end frame");
         var d = Assert.Single(project.Diagnostics);
         Assert.Equal("test.gmac(2,14): error GMAC0102: frame 'a' is already defined at test.gmac(1,14)", d.ToString());
     }

@@ -1,5 +1,6 @@
 using GMac.Core.Numerics;
 using GMac.Dsl.Semantics;
+using GMac.Dsl.Tests.Support;
 
 namespace GMac.Dsl.Tests.Semantics;
 
@@ -8,7 +9,7 @@ public sealed class Binder_Frames
 {
     private static SemanticModel Bind(string text)
     {
-        var project = DslProject.FromSource(text);
+        var project = SingleFileProject.Bind(text);
         Assert.True(project.Diagnostics.All(d => !d.IsError), string.Join("\n", project.Diagnostics));
         return project.Model;
     }
@@ -28,7 +29,7 @@ public sealed class Binder_Frames
             define frame a as basis: {x, y} Euclidean end frame
             define frame b as basis: {s, t} transform a by BCM = {{1, 1}, {0, 2}} end frame
             """).Frames["b"];
-        Assert.Equal(new Rational[,] { { 2, 2 }, { 2, 4 } }, f.InnerProductMatrix);
+        Assert.Equal(new Rational[,] { { 2, 2 }, { 2, 4 } }, f.InnerProductMatrix.ToArray());
     }
 
     [Fact]
@@ -38,7 +39,7 @@ public sealed class Binder_Frames
             define frame c as basis: {no, e1, ni} IPM = {{0, 0, -1}, {0, 1, 0}, {-1, 0, 0}} end frame
             define frame n as basis: {ni, no} subspace of c end frame
             """).Frames["n"];
-        Assert.Equal(new Rational[,] { { 0, -1 }, { -1, 0 } }, f.InnerProductMatrix);
+        Assert.Equal(new Rational[,] { { 0, -1 }, { -1, 0 } }, f.InnerProductMatrix.ToArray());
     }
 
     [Fact]
@@ -62,6 +63,18 @@ public sealed class Binder_Frames
             Assert.Equal(o.InnerProductMatrix[i, j], s);
             if (i != j) Assert.Equal(Rational.Zero, s);
         }
+    }
+
+    [Fact]
+    public void Orthogonalized_degenerate_frame_keeps_its_null_direction()
+    {
+        // x·y = 1 and z is orthogonal to everything: x + y/2 squares to 1, the rest to −1 and 0.
+        var o = Bind("""
+            define frame c as basis: {x, y, z} IPM = {{0, 1, 0}, {1, 0, 0}, {0, 0, 0}} end frame
+            define frame o as basis: {a, b, d} orthogonalize c end frame
+            """).Frames["o"];
+        Assert.Equal(new Rational[,] { { 1, 0, 0 }, { 0, -1, 0 }, { 0, 0, 0 } }, o.InnerProductMatrix.ToArray());
+        Assert.Equal(Rational.One, o.BasisChangeMatrix![2, 2]);
     }
 
     [Fact]

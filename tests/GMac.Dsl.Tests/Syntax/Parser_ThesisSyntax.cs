@@ -1,4 +1,5 @@
 using GMac.Dsl.Semantics;
+using GMac.Dsl.Tests.Support;
 
 namespace GMac.Dsl.Tests.Syntax;
 
@@ -7,7 +8,7 @@ public sealed class Parser_ThesisSyntax
 {
     private static DslProject Clean(string text)
     {
-        var project = DslProject.FromSource(text);
+        var project = SingleFileProject.Bind(text);
         Assert.True(project.Diagnostics.Count == 0, string.Join("\n", project.Diagnostics));
         return project;
     }

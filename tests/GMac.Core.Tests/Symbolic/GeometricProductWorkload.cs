@@ -1,14 +1,15 @@
 using System.Numerics;
+using GMac.Core.Symbolic;
 
-namespace GMac.Core.Symbolic;
+namespace GMac.Core.Tests.Symbolic;
 
 /// <summary>
-/// A fixed symbolic workload for benchmarks: the Euclidean geometric product of two general
+/// A fixed symbolic workload: the Euclidean geometric product of two general
 /// multivectors of an n-dimensional space with symbolic coefficients a0…, b0…, accumulated
 /// coefficient by coefficient as a generic multivector product does. Independent of the algebra
-/// layer on purpose, so it measures the scalar engine alone.
+/// layer on purpose, so it exercises the scalar engine alone.
 /// </summary>
-public sealed class GeometricProductWorkload
+internal sealed class GeometricProductWorkload
 {
     private readonly Scalar[] _left;
     private readonly Scalar[] _right;
@@ -83,7 +84,7 @@ public sealed class GeometricProductWorkload
     }
 
     /// <summary>Sign of e_A e_B = ±e_(A xor B) for orthonormal Euclidean basis blades given as bitmaps.</summary>
-    internal static int ReorderingSign(int a, int b)
+    public static int ReorderingSign(int a, int b)
     {
         var swaps = 0;
         for (a >>= 1; a != 0; a >>= 1) swaps += BitOperations.PopCount((uint)(a & b));
