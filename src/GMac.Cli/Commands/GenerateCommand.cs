@@ -2,6 +2,7 @@ using System.Diagnostics;
 using System.Globalization;
 using System.Text;
 using GMac.Cli.BindingPoints;
+using GMac.Dsl.BindingPoints;
 using SafeFiles;
 
 namespace GMac.Cli.Commands;
@@ -160,7 +161,7 @@ internal sealed class GenerateCommand : ICommand
         {
             var inside = Enumerable.Range(r.Point.RegionLine + 1, r.Point.EndRegionLine - r.Point.RegionLine - 1).Select(i => lines[i]).ToList();
             var text = string.Concat(inside);
-            var bindings = string.Concat(inside.Where(l => l.TrimStart().StartsWith(BindingPointReader.LinePrefix, StringComparison.Ordinal)));
+            var bindings = string.Concat(inside.Where(BindingLineReader.IsBindingLine));
             var code = r.Code ?? "";
             return !string.Equals(text, bindings + code, StringComparison.Ordinal)
                 && !string.Equals(text, bindings + WithoutStatistics(code), StringComparison.Ordinal);
