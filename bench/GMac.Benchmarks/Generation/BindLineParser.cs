@@ -1,5 +1,6 @@
 using System.Reflection;
 using System.Text.RegularExpressions;
+using GMac.Dsl.BindingPoints;
 using GMac.Dsl.Generation;
 
 namespace GMac.Benchmarks.Generation;
@@ -7,7 +8,8 @@ namespace GMac.Benchmarks.Generation;
 /// <summary>
 /// Reads the binding points of the kernel sources embedded in this assembly, so that the report can
 /// regenerate each one with the library and take its operation counts for exactly those bindings.
-/// Only the forms the kernels use are understood: <c>Bind("p", "Class", "target")</c> and <c>Bind("p.blade", "value")</c>.
+/// Each <c>//GMac.</c> line goes through <see cref="BindingLineReader"/>, as in gmac: a line gmac
+/// rejects stops the report instead of being skipped.
 /// </summary>
 public static partial class BindLineParser
 {
@@ -21,6 +23,7 @@ public static partial class BindLineParser
         return Parse(reader.ReadToEnd(), macroName);
     }
 
+    /// <exception cref="FormatException">A binding line of a region of the macro is malformed.</exception>
     public static IReadOnlyList<IReadOnlyList<BindingSpec>> Parse(string source, string macroName)
     {
         var regions = new List<IReadOnlyList<BindingSpec>>();
@@ -41,26 +44,12 @@ public static partial class BindLineParser
                 current = null;
                 continue;
             }
-            if (current is null) continue;
-            var bind = Bind().Match(line);
-            if (!bind.Success) continue;
-            var column = lines[i].IndexOf("//", StringComparison.Ordinal) + 1;
-            var (first, second) = (bind.Groups[1].Value, bind.Groups[2].Value);
-            if (bind.Groups[3].Success)
-            {
-                current.Add(new ClassBindingSpec(first, second, bind.Groups[3].Value, i + 1, column));
-                continue;
-            }
-            var dot = first.IndexOf('.');
-            if (dot < 0) throw new FormatException($"line {i + 1}: '{first}' names no blade (expected \"parameter.blade\").");
-            current.Add(new CoefficientBindingSpec(first[..dot], first[(dot + 1)..], second, second.Contains('<'), i + 1, column));
+            if (current is null || BindingLineReader.Read(lines[i], i + 1) is not { } read) continue;
+            current.Add(read.Spec ?? throw new FormatException($"line {read.Line}, column {read.Column}: {read.Error}"));
         }
         return regions;
     }
 
     [GeneratedRegex(@"^#region\s+GMac\s*:\s*(\w+)")]
     private static partial Regex Region();
-
-    [GeneratedRegex(@"^//GMac\.Bind\(\s*""([^""]*)""\s*,\s*""([^""]*)""\s*(?:,\s*""([^""]*)""\s*)?\)")]
-    private static partial Regex Bind();
 }

@@ -1,5 +1,6 @@
 using System.Text;
 using GMac.Core.CodeGeneration;
+using GMac.Dsl.BindingPoints;
 using GMac.Dsl.Generation;
 using Microsoft.CodeAnalysis;
 using Microsoft.CodeAnalysis.CSharp;
@@ -87,7 +88,7 @@ internal static class BindingPointGenerator
             var point = region.Point;
             for (; line <= point.RegionLine; line++) text.Append(file.Lines[line]);
             for (; line < point.EndRegionLine; line++)
-                if (region.Code is null || file.Lines[line].TrimStart().StartsWith(BindingPointReader.LinePrefix, StringComparison.Ordinal))
+                if (region.Code is null || BindingLineReader.IsBindingLine(file.Lines[line]))
                     text.Append(file.Lines[line]);
             if (region.Code is null) continue;
             var start = text.Length;

@@ -1,5 +1,5 @@
 using System.Text.RegularExpressions;
-using GMac.Core.Numerics;
+using GMac.Dsl.BindingPoints;
 using GMac.Dsl.Generation;
 using Microsoft.CodeAnalysis;
 using Microsoft.CodeAnalysis.CSharp;
@@ -9,12 +9,10 @@ namespace GMac.Cli.BindingPoints;
 
 /// <summary>
 /// Finds the binding points of a C# file through Roslyn's region directives (so regions inside
-/// strings or comments do not count) and reads their <c>//GMac.</c> lines as C# invocations.
+/// strings or comments do not count) and reads their <c>//GMac.</c> lines with the shared <see cref="BindingLineReader"/>.
 /// </summary>
 internal static partial class BindingPointReader
 {
-    public const string LinePrefix = "//GMac.";
-
     /// <summary>Cheap test that lets the tool skip parsing files that cannot hold a binding point.</summary>
     public static bool MayContainBindingPoints(string text) => text.Contains("GMac", StringComparison.Ordinal) && RegionMention().IsMatch(text);
 
@@ -108,89 +106,12 @@ internal static partial class BindingPointReader
         var bindings = new List<BindingLine>();
         for (var i = regionLine + 1; i < endLine; i++)
         {
-            var text = lines[i].TrimEnd('\r', '\n');
-            var trimmed = text.TrimStart();
-            if (!trimmed.StartsWith(LinePrefix, StringComparison.Ordinal)) continue;
-            var column = text.Length - trimmed.Length + 1;
-            if (ReadLine(trimmed[2..], i + 1, column, out var error) is { } binding) bindings.Add(binding);
-            else diagnostics.Add(new(path, i + 1, column, "GMAC0404", error!));
+            if (BindingLineReader.Read(lines[i], i + 1) is not { } read) continue;
+            if (read.Spec is { } spec) bindings.Add(new BindingLine(spec));
+            else diagnostics.Add(new(path, read.Line, read.Column, "GMAC0404", read.Error!));
         }
         return new BindingPoint(macro, regionLine, endLine, indent, bindings, regionColumn, scope);
     }
-
-    /// <summary>Reads <c>GMac.Bind(…);</c>, <c>GMac.AssumeMin(…);</c> or <c>GMac.AssumeMax(…);</c>.</summary>
-    private static BindingLine? ReadLine(string code, int line, int column, out string? error)
-    {
-        error = null;
-        var expression = SyntaxFactory.ParseExpression(code, consumeFullText: false);
-        var rest = code[expression.FullSpan.End..];
-        if (expression.ContainsDiagnostics || !LineRest().IsMatch(rest))
-        {
-            var first = expression.GetDiagnostics().FirstOrDefault()?.GetMessage();
-            error = $"malformed binding line '//{code.Trim()}'{(first is null ? "" : $": {first}")}; expected e.g. //GMac.Bind(\"u.e1\", \"<u.x>\");";
-            return null;
-        }
-        if (expression is not InvocationExpressionSyntax
-            {
-                Expression: MemberAccessExpressionSyntax { Expression: IdentifierNameSyntax { Identifier.ValueText: "GMac" } } member,
-            } call)
-        {
-            error = $"'//{code.Trim()}' is not a call of GMac.Bind, GMac.AssumeMin or GMac.AssumeMax";
-            return null;
-        }
-        var args = call.ArgumentList.Arguments;
-        switch (member.Name.Identifier.ValueText)
-        {
-            case "Bind" when args.Count == 2:
-            {
-                var name = StringValue(args[0]);
-                var dot = name?.IndexOf('.') ?? -1;
-                if (name is null || dot <= 0 || dot == name.Length - 1)
-                {
-                    error = "the first argument of a two-argument GMac.Bind must be a string \"parameter.blade\", such as \"v.e1\" or \"angle.1\"";
-                    return null;
-                }
-                var value = StringValue(args[1]);
-                var text = value ?? args[1].Expression.ToString();
-                return new BindingLine(new CoefficientBindingSpec(name[..dot].Trim(), name[(dot + 1)..].Trim(), text, value is not null, line, column));
-            }
-            case "Bind" when args.Count == 3:
-            {
-                var parameter = StringValue(args[0]);
-                var binding = StringValue(args[1]);
-                if (parameter is null || binding is null || parameter.Contains('.'))
-                {
-                    error = "a three-argument GMac.Bind takes a parameter name and a class binding name as strings, then the C# object, e.g. GMac.Bind(\"u\", \"Vector3D\", \"u\")";
-                    return null;
-                }
-                var target = StringValue(args[2]) ?? args[2].Expression.ToString();
-                return new BindingLine(new ClassBindingSpec(parameter.Trim(), binding.Trim(), target, line, column));
-            }
-            case "Bind":
-                error = $"GMac.Bind takes 2 or 3 arguments, not {args.Count}";
-                return null;
-            case "AssumeMin" or "AssumeMax" when args.Count == 2:
-            {
-                var subject = StringValue(args[0]) ?? args[0].Expression.ToString();
-                var boundText = StringValue(args[1]) ?? args[1].Expression.ToString();
-                if (!Rational.TryParse(boundText.Replace(" ", ""), out var bound))
-                {
-                    error = $"the bound '{boundText}' of GMac.{member.Name.Identifier.ValueText} is not a number";
-                    return null;
-                }
-                return new BindingLine(new AssumptionSpec(subject, bound, member.Name.Identifier.ValueText == "AssumeMin", line, column));
-            }
-            case "AssumeMin" or "AssumeMax":
-                error = $"GMac.{member.Name.Identifier.ValueText} takes 2 arguments (expression, bound), not {args.Count}";
-                return null;
-            default:
-                error = $"unknown binding command 'GMac.{member.Name.Identifier.ValueText}'; expected Bind, AssumeMin or AssumeMax";
-                return null;
-        }
-    }
-
-    private static string? StringValue(ArgumentSyntax argument) =>
-        argument.Expression is LiteralExpressionSyntax literal && literal.IsKind(SyntaxKind.StringLiteralExpression) ? literal.Token.ValueText : null;
 
     private static string LeadingWhiteSpace(string line)
     {
@@ -210,7 +131,4 @@ internal static partial class BindingPointReader
 
     [GeneratedRegex(@"^[A-Za-z_][A-Za-z0-9_]*$")]
     private static partial Regex Identifier();
-
-    [GeneratedRegex(@"^\s*;?\s*(//.*)?$")]
-    private static partial Regex LineRest();
 }

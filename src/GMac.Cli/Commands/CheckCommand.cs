@@ -1,3 +1,4 @@
+using System.CommandLine;
 using System.Globalization;
 using GMac.Dsl;
 
@@ -7,39 +8,19 @@ namespace GMac.Cli.Commands;
 /// <c>gmac check --dsl DIR [--timing]</c>: parses and binds a GMacDSL folder and
 /// prints its diagnostics (MSBuild format) on standard error.
 /// </summary>
-internal sealed class CheckCommand : ICommand
+internal static class CheckCommand
 {
-    public string Name => "check";
-    public string Summary => "parse and bind a GMacDSL folder, print diagnostics";
-    public string Usage => "gmac check --dsl DIR [--timing]";
-
-    public int Run(IReadOnlyList<string> args, TextWriter output, TextWriter error)
+    public static Command Create()
     {
-        string? dsl = null;
-        var timing = false;
-        for (var i = 0; i < args.Count; i++)
-        {
-            switch (args[i])
-            {
-                case "--dsl" when i + 1 < args.Count:
-                    dsl = args[++i];
-                    break;
-                case "--timing":
-                    timing = true;
-                    break;
-                default:
-                    error.WriteLine($"gmac check: unexpected argument '{args[i]}'");
-                    error.WriteLine($"usage: {Usage}");
-                    return ExitCodes.Usage;
-            }
-        }
-        if (dsl is null)
-        {
-            error.WriteLine("gmac check: missing --dsl DIR");
-            error.WriteLine($"usage: {Usage}");
-            return ExitCodes.Usage;
-        }
+        var dsl = SharedOptions.Dsl();
+        var timing = new Option<bool>("--timing") { Description = "also print the warm parse+bind time (median of 20 runs)" };
+        var command = new Command("check", "Parse and bind a GMacDSL folder and print its diagnostics.") { dsl, timing };
+        command.SetAction(r => Run(r.GetValue(dsl)!, r.GetValue(timing), r.InvocationConfiguration.Output, r.InvocationConfiguration.Error));
+        return command;
+    }
 
+    private static int Run(string dsl, bool timing, TextWriter output, TextWriter error)
+    {
         DslProject project;
         try
         {

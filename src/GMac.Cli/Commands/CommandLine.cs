@@ -1,53 +1,46 @@
+using System.CommandLine;
+using System.CommandLine.Invocation;
+
 namespace GMac.Cli.Commands;
 
-/// <summary>The table of commands and the top-level help.</summary>
+/// <summary>
+/// The <c>gmac</c> command tree and how a run maps onto the exit codes: 0 ok, 1 diagnostics,
+/// 2 usage errors (anything the parser or an option's validator rejects).
+/// </summary>
 internal static class CommandLine
 {
-    private static readonly ICommand[] Commands = [new GenerateCommand(), new CheckCommand(), new ShowCommand(), new VerifyCommand()];
+    public static RootCommand CreateRoot() =>
+        new("gmac: generates C# from geometric-algebra macros written in GMacDSL into the #region GMac blocks of C# files.")
+        {
+            GenerateCommand.Create(),
+            CheckCommand.Create(),
+            ShowCommand.Create(),
+            VerifyCommand.Create(),
+        };
 
     public static int Run(IReadOnlyList<string> args, TextWriter output, TextWriter error)
     {
-        if (args.Count == 0)
+        // 'gmac help' stays a way to ask for the overview.
+        if (args is ["help"]) args = ["--help"];
+        // Paths are taken as written: a path that begins with '@' is not a response file.
+        var result = CreateRoot().Parse(args, new ParserConfiguration { ResponseFileTokenReplacer = null });
+        if (result.Action is ParseErrorAction usage)
         {
-            PrintHelp(error);
+            // The errors, suggestions for a mistyped name, then the command's help, all on standard error.
+            usage.ShowHelp = true;
+            usage.ShowTypoCorrections = true;
+            result.Invoke(new InvocationConfiguration { Output = error, Error = error });
             return ExitCodes.Usage;
-        }
-        if (args[0] is "--help" or "-h" or "help")
-        {
-            PrintHelp(output);
-            return ExitCodes.Success;
-        }
-        var command = Commands.FirstOrDefault(c => c.Name == args[0]);
-        if (command is null)
-        {
-            error.WriteLine($"gmac: unknown command '{args[0]}'");
-            PrintHelp(error);
-            return ExitCodes.Usage;
-        }
-        if (args.Skip(1).Any(a => a is "--help" or "-h"))
-        {
-            output.WriteLine($"usage: {command.Usage}");
-            return ExitCodes.Success;
         }
         try
         {
-            return command.Run(args.Skip(1).ToList(), output, error);
+            return result.Invoke(new InvocationConfiguration { Output = output, Error = error, EnableDefaultExceptionHandler = false });
         }
         catch (Exception e) when (e is not OutOfMemoryException)
         {
             // Files are only ever replaced whole, so stopping here leaves no source half-written.
-            error.WriteLine($"gmac {command.Name}: internal error: {e.GetType().Name}: {e.Message}");
+            error.WriteLine($"gmac {result.CommandResult.Command.Name}: internal error: {e.GetType().Name}: {e.Message}");
             return ExitCodes.Diagnostics;
         }
-    }
-
-    private static void PrintHelp(TextWriter writer)
-    {
-        writer.WriteLine("usage: gmac <command> [options]");
-        writer.WriteLine();
-        writer.WriteLine("commands:");
-        foreach (var c in Commands) writer.WriteLine($"  {c.Name,-10} {c.Summary}");
-        writer.WriteLine();
-        writer.WriteLine("Run 'gmac <command> --help' for the options of one command.");
     }
 }

@@ -1,7 +1,9 @@
+using System.CommandLine;
 using System.Diagnostics;
 using System.Globalization;
 using System.Text;
 using GMac.Cli.BindingPoints;
+using GMac.Dsl.BindingPoints;
 using SafeFiles;
 
 namespace GMac.Cli.Commands;
@@ -10,27 +12,26 @@ namespace GMac.Cli.Commands;
 /// <c>gmac generate [PATH…] --dsl DIR [--check] [--stats] [--cache DIR]</c>: rewrites every
 /// binding point under the paths; with <c>--check</c> only reports files that are out of date.
 /// </summary>
-internal sealed class GenerateCommand : ICommand
+internal static class GenerateCommand
 {
-    private static readonly HashSet<string> FlagNames = ["--check", "--stats"];
-
-    public string Name => "generate";
-    public string Summary => "rewrite the binding points of C# files under PATH (default .)";
-    public string Usage => "gmac generate [PATH...] --dsl DIR [--check] [--stats] [--cache DIR]";
-
-    public int Run(IReadOnlyList<string> args, TextWriter output, TextWriter error)
+    public static Command Create()
     {
-        if (CommandOptions.TryParse(args, FlagNames, new HashSet<string>(), out var options) is { } problem)
+        var paths = SharedOptions.Paths("C# files or folders whose binding points are rewritten");
+        var dsl = SharedOptions.Dsl();
+        var check = new Option<bool>("--check") { Description = "write nothing; exit 1 if any region is out of date" };
+        var stats = SharedOptions.Stats("begin each region with a comment counting its operations");
+        var cache = SharedOptions.Cache();
+        var command = new Command("generate", "Rewrite the binding points (#region GMac blocks) of C# files.") { paths, dsl, check, stats, cache };
+        UnknownOptions.RejectIn(paths, command);
+        command.SetAction(r =>
         {
-            error.WriteLine($"gmac generate: {problem}");
-            error.WriteLine($"usage: {Usage}");
-            return ExitCodes.Usage;
-        }
-        var watch = Stopwatch.StartNew();
-        var context = DslLoader.Load(options.Dsl!, options.Cache, error);
-        if (context is null) return ExitCodes.Diagnostics;
-        var paths = options.Positional.Count > 0 ? options.Positional : ["."];
-        return Execute(context, paths, options.Flags.Contains("--check"), options.Flags.Contains("--stats"), output, error, watch);
+            var watch = Stopwatch.StartNew();
+            var error = r.InvocationConfiguration.Error;
+            var context = DslLoader.Load(r.GetValue(dsl)!, r.GetValue(cache), error);
+            if (context is null) return ExitCodes.Diagnostics;
+            return Execute(context, SharedOptions.PathsOrCurrent(r.GetValue(paths)), r.GetValue(check), r.GetValue(stats), r.InvocationConfiguration.Output, error, watch);
+        });
+        return command;
     }
 
     /// <summary>Generates with an already loaded DSL (what tests and the other commands share).</summary>
@@ -160,7 +161,7 @@ internal sealed class GenerateCommand : ICommand
         {
             var inside = Enumerable.Range(r.Point.RegionLine + 1, r.Point.EndRegionLine - r.Point.RegionLine - 1).Select(i => lines[i]).ToList();
             var text = string.Concat(inside);
-            var bindings = string.Concat(inside.Where(l => l.TrimStart().StartsWith(BindingPointReader.LinePrefix, StringComparison.Ordinal)));
+            var bindings = string.Concat(inside.Where(BindingLineReader.IsBindingLine));
             var code = r.Code ?? "";
             return !string.Equals(text, bindings + code, StringComparison.Ordinal)
                 && !string.Equals(text, bindings + WithoutStatistics(code), StringComparison.Ordinal);

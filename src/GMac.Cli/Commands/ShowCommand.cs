@@ -1,3 +1,5 @@
+using System.CommandLine;
+using System.CommandLine.Parsing;
 using GMac.Cli.BindingPoints;
 using GMac.Core.CodeGeneration;
 using GMac.Core.Numerics;
@@ -9,47 +11,64 @@ namespace GMac.Cli.Commands;
 /// <c>gmac show MACRO --dsl DIR [--bind …] [--min EXPR=V] [--max EXPR=V] [--stats]</c>: prints the
 /// code generated for one macro, with default bindings (<c>u_e1</c>, <c>w_e1</c>, …) unless given.
 /// </summary>
-internal sealed class ShowCommand : ICommand
+internal static class ShowCommand
 {
-    private static readonly HashSet<string> FlagNames = ["--stats"];
-    private static readonly HashSet<string> ValuedNames = ["--bind", "--min", "--max"];
-
-    public string Name => "show";
-    public string Summary => "print the code generated for one macro";
-
-    public string Usage =>
-        "gmac show MACRO --dsl DIR [--bind NAME=EXPR ...] [--min EXPR=VALUE] [--max EXPR=VALUE] [--stats] [--cache DIR]" + Environment.NewLine +
-        "  --bind u.e1=<u.x>       coefficient from a C# expression (<...> marks C# text inside a scalar expression)" + Environment.NewLine +
-        "  --bind angle.1=cr       coefficient from a bare C# expression (a number is a constant)" + Environment.NewLine +
-        "  --bind w.e1=<w.x>       output coefficient into an assignable C# target" + Environment.NewLine +
-        "  --bind u=Vector3D:obj   whole parameter through a class binding on the C# object obj" + Environment.NewLine +
-        "  --min cr=0 --max cr=6.2832   bounds on a bound C# expression";
-
-    public int Run(IReadOnlyList<string> args, TextWriter output, TextWriter error)
+    public static Command Create()
     {
-        var problem = CommandOptions.TryParse(args, FlagNames, ValuedNames, out var options);
-        if (problem is null && options.Positional.Count != 1) problem = "expected exactly one MACRO name";
-        if (problem is not null)
+        var macro = new Argument<string>("MACRO") { Description = "the macro whose code is printed" };
+        var dsl = SharedOptions.Dsl();
+        Option<string[]>[] specOptions =
+        [
+            SpecOption("--bind", "NAME=EXPR",
+                "a binding, repeatable: u.e1=<u.x> (C# text in <...> inside a scalar expression), angle.1=cr (a bare C# expression; " +
+                "a number is a constant), w.e1=<w.x> (an output into an assignable C# target), u=Vector3D:obj (a whole parameter " +
+                "through a class binding on the C# object obj); default: u_e1, w_e1, ..."),
+            SpecOption("--min", "EXPR=VALUE", "a lower bound on a bound C# expression, repeatable, e.g. --min cr=0"),
+            SpecOption("--max", "EXPR=VALUE", "an upper bound on a bound C# expression, repeatable, e.g. --max cr=6.2832"),
+        ];
+        var stats = SharedOptions.Stats("begin the code with a comment counting its operations");
+        var cache = SharedOptions.Cache();
+        var command = new Command("show", "Print the code generated for one macro.") { macro, dsl };
+        UnknownOptions.RejectIn(macro, command);
+        foreach (var option in specOptions) command.Options.Add(option);
+        command.Options.Add(stats);
+        command.Options.Add(cache);
+        command.SetAction(r => Run(r.GetValue(macro)!, r.GetValue(dsl)!, r.GetValue(cache), SpecsInOrder(r, specOptions), r.GetValue(stats),
+            r.InvocationConfiguration.Output, r.InvocationConfiguration.Error));
+        return command;
+    }
+
+    /// <summary>A repeatable binding option whose every value must read as a spec (else a usage error).</summary>
+    private static Option<string[]> SpecOption(string name, string helpName, string description)
+    {
+        var option = new Option<string[]>(name) { Description = description, HelpName = helpName };
+        option.Validators.Add(result =>
         {
-            error.WriteLine($"gmac show: {problem}");
-            error.WriteLine($"usage: {Usage}");
-            return ExitCodes.Usage;
-        }
-        var specs = new List<BindingSpec>();
-        for (var i = 0; i < options.Values.Count; i++)
+            foreach (var token in result.Tokens.Where(t => ParseSpec(name, t.Value, 0) is null))
+                result.AddError($"cannot read '{name} {token.Value}': expected {name} {helpName}");
+        });
+        return option;
+    }
+
+    /// <summary>The values of the binding options in command-line order, which numbers their specs.</summary>
+    private static List<(string Option, string Value)> SpecsInOrder(ParseResult result, IReadOnlyList<Option<string[]>> options)
+    {
+        var values = new List<(string, string)>();
+        var tokens = result.Tokens;
+        for (var i = 0; i + 1 < tokens.Count; i++)
         {
-            var (option, value) = options.Values[i];
-            if (ParseSpec(option, value, i + 1) is { } spec) specs.Add(spec);
-            else
-            {
-                error.WriteLine($"gmac show: cannot read '{option} {value}'");
-                error.WriteLine($"usage: {Usage}");
-                return ExitCodes.Usage;
-            }
+            if (tokens[i].Type == TokenType.Option && options.FirstOrDefault(o => o.Name == tokens[i].Value) is { } option)
+                values.Add((option.Name, tokens[++i].Value));
         }
-        var context = DslLoader.Load(options.Dsl!, options.Cache, error);
+        return values;
+    }
+
+    private static int Run(string macro, string dsl, string? cache, List<(string Option, string Value)> values, bool stats, TextWriter output, TextWriter error)
+    {
+        // Every value was checked by the option's validator.
+        var specs = values.Select((v, i) => ParseSpec(v.Option, v.Value, i + 1)!).ToList();
+        var context = DslLoader.Load(dsl, cache, error);
         if (context is null) return ExitCodes.Diagnostics;
-        var macro = options.Positional[0];
         // Default bindings get line 0 so their errors are not blamed on a --bind option.
         if (specs.Count == 0 || specs.All(s => s is AssumptionSpec))
             specs.InsertRange(0, context.Generator.DefaultBindings(macro).Select(d => d with { Line = 0 }));
@@ -57,7 +76,7 @@ internal sealed class ShowCommand : ICommand
         // declaration (or the DSL folder for an unknown macro); --bind options are quoted.
         var macroAt = context.Project.Model.Macros.TryGetValue(macro, out var symbol)
             ? symbol.Declaration
-            : Dsl.Diagnostics.SourceSpan.None(options.Dsl!);
+            : Dsl.Diagnostics.SourceSpan.None(dsl);
         GenerationOutcome outcome;
         try
         {
@@ -72,7 +91,7 @@ internal sealed class ShowCommand : ICommand
         {
             foreach (var e in outcome.Errors)
             {
-                var option = e.Line > 0 && e.Line <= options.Values.Count ? $"{options.Values[e.Line - 1].Option} {options.Values[e.Line - 1].Value}: " : "";
+                var option = e.Line > 0 && e.Line <= values.Count ? $"{values[e.Line - 1].Option} {values[e.Line - 1].Value}: " : "";
                 error.WriteLine(Diagnostic(e.Source ?? macroAt, e.Code, option + e.Message));
             }
             return ExitCodes.Diagnostics;
@@ -80,7 +99,7 @@ internal sealed class ShowCommand : ICommand
         output.Write(CSharpEmitter.Emit(outcome.Result!.Block, new CSharpEmitOptions
         {
             NewLine = Environment.NewLine,
-            IncludeStatistics = options.Flags.Contains("--stats"),
+            IncludeStatistics = stats,
         }));
         return ExitCodes.Success;
     }

@@ -1,3 +1,4 @@
+using System.CommandLine;
 using System.Globalization;
 using GMac.Cli.BindingPoints;
 using GMac.Cli.Verification;
@@ -9,29 +10,24 @@ namespace GMac.Cli.Commands;
 /// <c>gmac verify [PATH…] --dsl DIR [--seed N] [--cache DIR]</c>: compiles the code of every binding
 /// point inside its file and project, and compares it with the numeric engine on random inputs.
 /// </summary>
-internal sealed class VerifyCommand : ICommand
+internal static class VerifyCommand
 {
-    private static readonly HashSet<string> ValuedNames = ["--seed"];
-
-    public string Name => "verify";
-    public string Summary => "compile each binding point in memory and check it against the numeric engine";
-    public string Usage => "gmac verify [PATH...] --dsl DIR [--seed N] [--cache DIR]";
-
-    public int Run(IReadOnlyList<string> args, TextWriter output, TextWriter error)
+    public static Command Create()
     {
-        var problem = CommandOptions.TryParse(args, new HashSet<string>(), ValuedNames, out var options);
-        var seed = 1;
-        if (problem is null && options.Values.Count > 0 && !int.TryParse(options.Values[^1].Value, NumberStyles.Integer, CultureInfo.InvariantCulture, out seed))
-            problem = $"--seed needs an integer, not '{options.Values[^1].Value}'";
-        if (problem is not null)
+        var paths = SharedOptions.Paths("C# files or folders whose binding points are verified");
+        var dsl = SharedOptions.Dsl();
+        var seed = new Option<int>("--seed") { Description = "seed of the random inputs", HelpName = "N", DefaultValueFactory = _ => 1 };
+        var cache = SharedOptions.Cache();
+        var command = new Command("verify", "Compile each binding point in memory and check it against the numeric engine.") { paths, dsl, seed, cache };
+        UnknownOptions.RejectIn(paths, command);
+        command.SetAction(r =>
         {
-            error.WriteLine($"gmac verify: {problem}");
-            error.WriteLine($"usage: {Usage}");
-            return ExitCodes.Usage;
-        }
-        var context = DslLoader.Load(options.Dsl!, options.Cache, error);
-        if (context is null) return ExitCodes.Diagnostics;
-        return Execute(context, options.Positional.Count > 0 ? options.Positional : ["."], seed, output, error);
+            var error = r.InvocationConfiguration.Error;
+            var context = DslLoader.Load(r.GetValue(dsl)!, r.GetValue(cache), error);
+            if (context is null) return ExitCodes.Diagnostics;
+            return Execute(context, SharedOptions.PathsOrCurrent(r.GetValue(paths)), r.GetValue(seed), r.InvocationConfiguration.Output, error);
+        });
+        return command;
     }
 
     public static int Execute(GenerationContext context, IReadOnlyList<string> paths, int seed, TextWriter output, TextWriter error)

@@ -35,8 +35,9 @@ public class BindLineParser_Regions
         Assert.Equal(("p", "Vector3D", "obj.P", 9), (c.Parameter, c.ClassBinding, c.Target, c.Line));
         var q = Assert.IsType<CoefficientBindingSpec>(bindings[1]);
         Assert.Equal(("q", "e1^e2", "<o.x>", true), (q.Parameter, q.Blade, q.Value, q.IsTemplate));
+        // A quoted value is a template, as gmac reads it, even without <...>.
         var s = Assert.IsType<CoefficientBindingSpec>(bindings[2]);
-        Assert.False(s.IsTemplate);
+        Assert.True(s.IsTemplate);
     }
 
     [Fact]
