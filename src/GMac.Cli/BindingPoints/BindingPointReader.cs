@@ -16,10 +16,27 @@ internal static partial class BindingPointReader
     /// <summary>Cheap test that lets the tool skip parsing files that cannot hold a binding point.</summary>
     public static bool MayContainBindingPoints(string text) => text.Contains("GMac", StringComparison.Ordinal) && RegionMention().IsMatch(text);
 
+    /// <summary>
+    /// Positions of the directives a Debug build compiles. Configuration symbols are unknown here,
+    /// so a region is skipped only when neither a plain nor a Debug build would compile it
+    /// (<c>#if false</c>, <c>#if SOME_UNDEFINED_SYMBOL</c>), never because it is Debug-only.
+    /// </summary>
+    private static HashSet<int> DirectivesActiveInDebugBuilds(string text, string path)
+    {
+        var debug = CSharpSyntaxTree.ParseText(text, DebugBuild, path);
+        return debug.GetRoot().DescendantTrivia()
+            .Where(t => t.IsDirective && t.GetStructure() is DirectiveTriviaSyntax { IsActive: true })
+            .Select(t => t.SpanStart)
+            .ToHashSet();
+    }
+
+    private static readonly CSharpParseOptions DebugBuild = new(LanguageVersion.Latest, preprocessorSymbols: ["DEBUG", "TRACE"]);
+
     public static BindingPointFile Read(SourceText source)
     {
         var path = source.Path;
         var tree = CSharpSyntaxTree.ParseText(source.Text, path: path);
+        var activeInSomeBuild = DirectivesActiveInDebugBuilds(source.Text, path);
         var root = tree.GetRoot();
         var text = tree.GetText();
         var lines = SplitLines(text);
@@ -31,7 +48,7 @@ internal static partial class BindingPointReader
         foreach (var directive in root.DescendantTrivia().Where(t => t.IsDirective))
         {
             // A directive in a branch the compiler skips (#if false) is no directive: its region is not code.
-            if (directive.GetStructure() is DirectiveTriviaSyntax { IsActive: false }) continue;
+            if (directive.GetStructure() is DirectiveTriviaSyntax { IsActive: false } && !activeInSomeBuild.Contains(directive.SpanStart)) continue;
             var position = tree.GetLineSpan(directive.Span).StartLinePosition;
             var line = position.Line;
             var column = position.Character + 1;

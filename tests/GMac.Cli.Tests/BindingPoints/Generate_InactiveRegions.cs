@@ -2,7 +2,7 @@ using GMac.Cli.Tests.Support;
 
 namespace GMac.Cli.Tests.BindingPoints;
 
-/// <summary>Regions in code the compiler skips (<c>#if false</c>) are not binding points; region diagnostics sit at the region's column.</summary>
+/// <summary>Regions in code no build compiles (<c>#if false</c>) are not binding points, Debug-only or Release-only ones are; region diagnostics sit at the region's column.</summary>
 [Collection(SharedDslCollection.Name)]
 public sealed class Generate_InactiveRegions : IDisposable
 {
@@ -43,6 +43,37 @@ public sealed class Generate_InactiveRegions : IDisposable
         var text = File.ReadAllText(path);
         Assert.Contains("        kept as it is\n", text);
         Assert.Contains("w.x = ", text);
+    }
+
+    [Theory]
+    [InlineData("#if DEBUG")]
+    [InlineData("#if !DEBUG")]
+    [InlineData("#if TRACE && DEBUG")]
+    public void Region_compiled_in_debug_or_release_builds_is_generated(string condition)
+    {
+        var text = $$"""
+            namespace Sample;
+
+            public static class Cross
+            {
+                public static void Run(V u, V v, V w)
+                {
+            {{condition}}
+                    #region GMac : NormalToVectors
+                    //GMac.Bind("u", "Vector3D", u);
+                    //GMac.Bind("v", "Vector3D", v);
+                    //GMac.Bind("w", "Vector3D", w);
+                    #endregion
+            #endif
+                }
+            }
+            """;
+        var path = _temp.Write("Cross.cs", text);
+
+        var (exit, _, err) = Tool.Generate([path]);
+
+        Assert.True(exit == 0, err);
+        Assert.Contains("w.x = ", File.ReadAllText(path));
     }
 
     [Fact]
