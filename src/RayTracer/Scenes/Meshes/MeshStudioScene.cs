@@ -43,12 +43,15 @@ public sealed class MeshStudioScene : SceneDescription
     public override string Name => "mesh";
     public override string Description => $"{_fileName} in a studio: fitted camera, ground, key and fill lights.";
 
-    /// <summary>Centre and radius of the sphere around the mesh's bounding box (radius 1 for a single point).</summary>
+    /// <summary>
+    /// A sphere around every vertex, centred on the bounding box (radius 1 for a single point). Its radius is
+    /// the farthest vertex, not the box's half diagonal, so flat or thin meshes are not framed too small.
+    /// </summary>
     public static (Point3D Centre, double Radius) BoundingSphere(Mesh mesh)
     {
         var box = mesh.Bounds;
         var centre = Point3D.Lerp(box.Min, box.Max, 0.5);
-        var radius = 0.5 * box.Diagonal.Length;
+        var radius = mesh.Vertices.Max(v => v.Distance(centre));
         return (centre, radius > 0 ? radius : 1.0);
     }
 
