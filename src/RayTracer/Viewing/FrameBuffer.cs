@@ -3,7 +3,7 @@ using RayTracer.Viewing.Imaging;
 
 namespace RayTracer.Viewing;
 
-/// <summary>Linear radiance per pixel, row 0 at the top; tone mapped to 8 bits on output.</summary>
+/// <summary>Linear radiance per pixel, row 0 at the top; tone mapped to 8 bits for PNG, kept linear for HDR.</summary>
 public sealed class FrameBuffer
 {
     private readonly RGBColor[] _pixels;
@@ -63,4 +63,18 @@ public sealed class FrameBuffer
     }
 
     public PixelImage ToImage(ViewPlane vp) => ToImage(vp.GamutMapping, vp.Gamma);
+
+    /// <summary>The radiance as stored, for formats that keep it linear (no gamut mapping, no gamma).</summary>
+    public RadianceImage ToRadianceImage()
+    {
+        var image = new RadianceImage(Width, Height);
+        for (var i = 0; i < _pixels.Length; i++)
+        {
+            var c = _pixels[i];
+            image.Data[3 * i] = (float)c.r;
+            image.Data[3 * i + 1] = (float)c.g;
+            image.Data[3 * i + 2] = (float)c.b;
+        }
+        return image;
+    }
 }

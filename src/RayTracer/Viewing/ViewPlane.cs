@@ -57,8 +57,25 @@ public sealed class ViewPlane
 
     public int NumSamples => Sampler.NumSamples;
 
-    /// <summary>Tone maps (gamut mapping, gamma) and writes the image as PNG, atomically.</summary>
-    public void SaveImage(FrameBuffer image, string path) => PngEncoder.Save(image.ToImage(this), path);
+    /// <summary>
+    /// Writes the image atomically in the format named by the extension: PNG tone mapped (gamut mapping,
+    /// gamma), HDR as linear radiance.
+    /// </summary>
+    public void SaveImage(FrameBuffer image, string path)
+    {
+        switch (Path.GetExtension(path).ToLowerInvariant())
+        {
+            case ".png":
+                ImageFile.SavePng(image.ToImage(this), path);
+                break;
+            case ".hdr":
+                ImageFile.SaveHdr(image.ToRadianceImage(), path);
+                break;
+            default:
+                throw new ArgumentException(
+                    $"cannot write '{path}': the extension must be one of {string.Join(", ", ImageFile.OutputExtensions)}", nameof(path));
+        }
+    }
 
     /// <summary>Multi-jittered sampling with <paramref name="samples"/> per pixel (a single sample is the pixel centre).</summary>
     public void SetSamples(int samples) =>

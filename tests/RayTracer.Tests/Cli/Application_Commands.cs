@@ -35,7 +35,7 @@ public sealed class Application_Commands : IDisposable
         var path = Path.Combine(_dir, "out.png");
         var (code, _, err) = Run("render", "spheres", "-o", path, "--width", "16", "--height", "10", "--spp", "1", "--threads", "2");
         Assert.Equal(0, code);
-        var image = PngDecoder.Load(path);
+        var image = ImageFile.ReadPixels(path);
         Assert.Equal(16, image.Width);
         Assert.Equal(10, image.Height);
         Assert.Contains("Mrays/s", err);
@@ -70,10 +70,14 @@ public sealed class Application_Commands : IDisposable
     [InlineData]
     [InlineData("list", "extra")]
     [InlineData("bench", "--triangles", "3")]
+    [InlineData("render", "spheres", "-o", "x.gif")]
+    [InlineData("render", "--samples", "0", "-o", "x.png")]
+    [InlineData("render", "--image", "missing.png", "texture-image", "-o", "x.png")]
+    [InlineData("render", "spheres", "--mesh", "missing.ply", "-o", "x.png")]
     public void Bad_arguments_exit_with_2_a_message_and_no_output_file(params string[] args)
     {
         var cwd = Environment.CurrentDirectory;
-        var resolved = args.Select(a => a.EndsWith(".png") || a.EndsWith(".jpg") ? Path.Combine(_dir, a) : a).ToArray();
+        var resolved = args.Select(a => Path.HasExtension(a) ? Path.Combine(_dir, a) : a).ToArray();
         var (code, _, err) = Run(resolved);
         Assert.Equal(2, code);
         Assert.StartsWith("raytracer: error:", err);
@@ -87,7 +91,7 @@ public sealed class Application_Commands : IDisposable
         var texture = Path.Combine(_dir, "texture.png");
         var image = new PixelImage(4, 2, 3);
         Array.Fill(image.Data, (byte)200);
-        PngEncoder.Save(image, texture);
+        ImageFile.SavePng(image, texture);
         var good = Path.Combine(_dir, "good.png");
         Assert.Equal(0, Run("render", "texture-image", "-o", good, "--width", "8", "--height", "6", "--spp", "1", "--image", texture).Code);
         Assert.True(File.Exists(good));
@@ -138,7 +142,7 @@ public sealed class Application_Commands : IDisposable
         Assert.Equal(0, Run("render", "spheres", "-o", output, "--width", "4", "--height", "4", "--spp", "1").Code);
 
         Assert.Equal("notes", File.ReadAllText(output + ".tmp"));
-        Assert.Equal(4, PngDecoder.Load(output).Width);
+        Assert.Equal(4, ImageFile.ReadPixels(output).Width);
         Assert.Equal(2, Directory.GetFiles(folder).Length);
     }
 

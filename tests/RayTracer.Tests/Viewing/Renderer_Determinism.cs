@@ -21,7 +21,7 @@ public class Renderer_Determinism
         world.Add(new Sphere(Point3D.Origin, 1) { Material = new Matte(0, 0.7, new RGBColor(0.9, 0.6, 0.3)) });
         world.Add(new Plane(new Point3D(0, 0, -1), new Normal3D(0, 0.3, 1)) { Material = new Matte(0, 0.5, RGBColor.White) });
         var image = new Renderer(new RenderOptions { Threads = threads, Seed = seed, TileSize = tileSize }).Render(world);
-        return PngEncoder.Encode(image.ToImage(GamutMapping.Clamp, 2.2));
+        return image.ToImage(GamutMapping.Clamp, 2.2).Data;
     }
 
     [Fact]

@@ -14,13 +14,13 @@ namespace RayTracer.Scenes.Texturing;
 
 /// <summary>
 /// One image on a sphere (spherical map), a cylinder (cylindrical map) and a square (rectangular map). The
-/// image is drawn in code and passed through the PNG encoder and decoder, so the scene needs no files;
-/// <see cref="SceneSettings.ImagePath"/> can point at a PNG instead.
+/// image is drawn in code, so the scene needs no files; <see cref="SceneSettings.ImagePath"/> can point at
+/// a PNG, JPEG, TGA, BMP or HDR file instead.
 /// </summary>
 public sealed class ImageTextureScene : SceneDescription
 {
     public override string Name => "texture-image";
-    public override string Description => "PNG image texture with spherical, cylindrical and rectangular mappings.";
+    public override string Description => "Image texture with spherical, cylindrical and rectangular mappings.";
 
     public override bool UsesImage => true;
 
@@ -50,18 +50,18 @@ public sealed class ImageTextureScene : SceneDescription
     protected override void Populate(World world)
     {
         var path = Settings.ImagePath;
-        var image = path is null ? PngDecoder.Decode(PngEncoder.Encode(TestCard())) : PngDecoder.Load(path);
+        var image = path is null ? RadianceImage.FromPixels(TestCard(), 2.2) : ImageFile.ReadRadiance(path, 2.2);
         world.BackgroundColor = new RGBColor(0.12, 0.12, 0.14);
         world.AmbientLight = new AmbientLight(0.5);
         world.Add(new Plane(Point3D.Origin, new Normal3D(0, 1, 0)) { Material = MaterialFactory.Matte(new RGBColor(0.6, 0.6, 0.6)) });
 
-        var spherical = new ImageTexture(image, 2.2) { Mapping = new SphericalMapping() };
+        var spherical = new ImageTexture(image) { Mapping = new SphericalMapping() };
         world.Add(WithMaterial(new Instance(new Sphere(Point3D.Origin, 1)).RotateY(0.6).Translate(-2.6, 1, 0), MaterialFactory.Matte(spherical, 0.3, 0.8)));
 
-        var cylindrical = new ImageTexture(image, 2.2) { Mapping = new CylindricalMapping() };
+        var cylindrical = new ImageTexture(image) { Mapping = new CylindricalMapping() };
         world.Add(WithMaterial(new Instance(new OpenCylinder(-1, 1, 1)).Translate(0, 1, 0), MaterialFactory.Matte(cylindrical, 0.3, 0.8)));
 
-        var rectangular = new ImageTexture(image, 2.2) { Mapping = new RectangularMapping() };
+        var rectangular = new ImageTexture(image) { Mapping = new RectangularMapping() };
         world.Add(WithMaterial(new Instance(new Rectangle(new Point3D(-1, 0, -1), new Vector3D(0, 0, 2), new Vector3D(2, 0, 0))).RotateX(Math.PI / 2).Translate(2.6, 1.1, 0),
             MaterialFactory.Matte(rectangular, 0.3, 0.8)));
 

@@ -4,7 +4,7 @@ using System.Text;
 
 namespace RayTracer.Tests.Viewing.Imaging;
 
-/// <summary>Builds PNG byte streams by hand from the specification, independently of the encoder.</summary>
+/// <summary>Builds PNG byte streams by hand from the specification, independently of the libraries under test.</summary>
 internal static class PngTestFiles
 {
     /// <summary>Bit-by-bit CRC-32, deliberately not table driven, as an independent check.</summary>
@@ -50,20 +50,28 @@ internal static class PngTestFiles
         return Chunk("IDAT", ms.ToArray());
     }
 
+    /// <summary>
+    /// Scanlines of an Adam7-interlaced image, every row unfiltered: the seven passes in order, each the
+    /// pixels at (x0 + i·dx, y0 + j·dy), empty passes left out as the specification says.
+    /// </summary>
+    public static byte[] Adam7Scanlines(byte[] pixels, int width, int height, int bytesPerPixel)
+    {
+        (int X0, int Y0, int Dx, int Dy)[] passes = [(0, 0, 8, 8), (4, 0, 8, 8), (0, 4, 4, 8), (2, 0, 4, 4), (0, 2, 2, 4), (1, 0, 2, 2), (0, 1, 1, 2)];
+        var output = new List<byte>();
+        foreach (var (x0, y0, dx, dy) in passes)
+        {
+            if (x0 >= width || y0 >= height)
+                continue;
+            for (var y = y0; y < height; y += dy)
+            {
+                output.Add(0);
+                for (var x = x0; x < width; x += dx)
+                    output.AddRange(pixels.AsSpan((y * width + x) * bytesPerPixel, bytesPerPixel).ToArray());
+            }
+        }
+        return [.. output];
+    }
+
     public static byte[] File(params byte[][] chunks) =>
         new byte[] { 137, 80, 78, 71, 13, 10, 26, 10 }.Concat(chunks.SelectMany(c => c)).ToArray();
-
-    public static IEnumerable<(string Type, byte[] Data, uint Crc)> ReadChunks(byte[] png)
-    {
-        var offset = 8;
-        while (offset < png.Length)
-        {
-            var length = BinaryPrimitives.ReadInt32BigEndian(png.AsSpan(offset));
-            var type = Encoding.ASCII.GetString(png, offset + 4, 4);
-            var data = png.AsSpan(offset + 8, length).ToArray();
-            var crc = BinaryPrimitives.ReadUInt32BigEndian(png.AsSpan(offset + 8 + length));
-            yield return (type, data, crc);
-            offset += 12 + length;
-        }
-    }
 }
