@@ -1,68 +1,49 @@
 namespace Twister;
 
 /// <summary>
-/// A full twist (thesis §6.4, Figure 6-6): a rotation by <see cref="Angle"/> about the line through
-/// <see cref="AxisOrigin"/> along <see cref="Axis"/>, followed by a slide of <see cref="Translation"/>
-/// times <see cref="Axis"/> along it. The body of <see cref="Apply"/> is generated from the GMacDSL
-/// macro ApplyTwistToPoint3D (conformal versor V_t V_GR applied to the point).
+/// A Euclidean transform (or a uniform scaling) whose versor depends on the parameters (u, v) through
+/// parameter maps (thesis §6.4.1, Figure 6-3). It applies to points, directions, tangent bivectors and
+/// other twists; every application is a kernel generated from dsl/macros/twister.gmac.
 /// </summary>
-public sealed class Twist(TwistablePoint axisOrigin, TwistablePoint axis, double angle, double translation)
+public abstract class Twist : ITwistable<Twist>
 {
-    public TwistablePoint AxisOrigin { get; } = axisOrigin;
-    public TwistablePoint Axis { get; } = axis;
-    public double Angle { get; } = angle;
-    public double Translation { get; } = translation;
+    /// <summary>False for reflections: they turn a right-handed frame into a left-handed one.</summary>
+    public virtual bool PreservesOrientation => true;
 
-    public TwistablePoint Apply(TwistablePoint p)
+    /// <summary>True when no parameter map of the twist depends on v, so it can drive a curve.</summary>
+    public abstract bool IgnoresV { get; }
+
+    public abstract TwistablePoint Apply(TwistablePoint p, double u, double v);
+
+    /// <summary>Moves a direction (a tangent); translations leave it alone.</summary>
+    public abstract TwistableVector Apply(TwistableVector d, double u, double v);
+
+    /// <summary>Moves a tangent plane as the two tangents spanning it.</summary>
+    public abstract TwistableBivector Apply(TwistableBivector b, double u, double v);
+
+    /// <summary>
+    /// One step of the product rule: <paramref name="p"/> moves to T(p), and each tangent d moves to
+    /// J d + ∂T(p)/∂θ · ∂θ/∂u (or ∂v), θ the twist's parameters.
+    /// </summary>
+    public abstract void ApplyWithTangents(ref TwistablePoint p, ref TwistableVector du, ref TwistableVector dv, double u, double v);
+
+    /// <summary>
+    /// This twist applied to another (at the parameters (u, v) of this one): the other's axis, origin
+    /// and direction move with it, so that <c>result.Apply(Apply(p))</c> equals <c>Apply(other.Apply(p))</c>.
+    /// </summary>
+    public Twist Apply(Twist other, double u = 0, double v = 0)
     {
-        var origin = AxisOrigin;
-        var axis = Axis;
-        var cr = Angle;
-        var ct = Translation;
-        var result = new TwistablePoint();
-
-        #region GMac : ApplyTwistToPoint3D
-        //GMac.Bind("rot_axis", "Vector3D", axis);
-        //GMac.Bind("tr_origin", "Vector3D", origin);
-        //GMac.Bind("angle.1", cr);
-        //GMac.Bind("tr_param.1", ct);
-        //GMac.Bind("in_mv", "Vector3D", p);
-        //GMac.Bind("out_mv", "Vector3D", result);
-        double tmp0 = 0.5 * ct;
-        double tmp1 = -(axis.x * tmp0);
-        double tmp2 = -(axis.y * tmp0);
-        double tmp3 = -(axis.z * tmp0);
-        double tmp4 = 0.5 * cr;
-        double tmp5 = Math.Cos(tmp4);
-        double tmp6 = Math.Sin(tmp4) / Math.Sqrt(axis.x * axis.x + axis.y * axis.y + axis.z * axis.z);
-        double tmp7 = -(axis.z * tmp6);
-        double tmp8 = axis.y * tmp6;
-        double tmp9 = -(axis.x * tmp6);
-        double tmp10 = origin.z - tmp3;
-        double tmp11 = origin.y - tmp2;
-        double tmp12 = tmp7 * tmp11 + tmp8 * tmp10 + tmp1 * tmp5;
-        double tmp13 = tmp1 - origin.x;
-        double tmp14 = tmp9 * tmp10 + tmp7 * tmp13 + tmp2 * tmp5;
-        double tmp15 = tmp8 * tmp13 + tmp3 * tmp5 - tmp9 * tmp11;
-        double tmp16 = tmp1 * tmp9 + tmp3 * tmp7 - tmp2 * tmp8;
-        double tmp17 = p.x * tmp5;
-        double tmp18 = p.z * tmp8;
-        double tmp19 = p.y * tmp7;
-        double tmp20 = p.x * tmp8;
-        double tmp21 = 2.0 * tmp15;
-        double tmp22 = p.x * tmp7;
-        double tmp23 = 2.0 * tmp14;
-        double tmp24 = p.y * tmp8;
-        double tmp25 = p.z * tmp7;
-        double tmp26 = tmp12 - tmp19;
-        result.x = tmp9 * (2.0 * (tmp25 - tmp16 - tmp24) + tmp9 * p.x) + tmp5 * (2.0 * (tmp18 - tmp26) + tmp17) + tmp7 * (-tmp23 - tmp22) + tmp8 * (-tmp21 - tmp20);
-        double tmp27 = 2.0 * tmp16;
-        double tmp28 = p.y * tmp5;
-        double tmp29 = p.z * tmp5;
-        result.y = tmp9 * (2.0 * (tmp29 - tmp15 - tmp20) - tmp9 * p.y) + tmp7 * (2.0 * (tmp12 - tmp17 - tmp18) - tmp19) + tmp5 * (tmp28 - tmp23) + tmp8 * (tmp27 + tmp24);
-        result.z = tmp9 * (2.0 * (tmp14 + tmp22 - tmp28) - tmp9 * p.z) + tmp8 * (2.0 * (tmp26 - tmp17) - tmp18) + tmp5 * (tmp29 - tmp21) + tmp7 * (tmp25 - tmp27);
-        #endregion
-
-        return result;
+        Require.NotNull(other, nameof(other));
+        return other.TransformedBy(this, u, v);
     }
+
+    public Twist TwistedBy(Twist twist, double u, double v) => twist.Apply(this, u, v);
+
+    /// <summary>This twist conjugated by <paramref name="by"/> evaluated at (u, v).</summary>
+    protected internal abstract Twist TransformedBy(Twist by, double u, double v);
+
+    public Twist RotatedAboutX(double angle) => RotationTwist.AboutX(angle, ParameterMap.One).Apply(this);
+    public Twist RotatedAboutY(double angle) => RotationTwist.AboutY(angle, ParameterMap.One).Apply(this);
+    public Twist RotatedAboutZ(double angle) => RotationTwist.AboutZ(angle, ParameterMap.One).Apply(this);
+    public Twist TranslatedBy(TwistableVector offset) => new TranslationTwist(offset, 1, ParameterMap.One).Apply(this);
 }

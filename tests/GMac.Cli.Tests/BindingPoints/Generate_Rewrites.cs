@@ -48,6 +48,9 @@ public sealed class Generate_Rewrites : IDisposable
         return lines.Skip(start + 1).Take(end - start - 1).Where(l => !l.TrimStart().StartsWith("//GMac.", StringComparison.Ordinal)).ToArray();
     }
 
+    /// <summary>The Figure 6-6 twist as a stand-alone file with one binding point.</summary>
+    private const string TwistSample = "tests/GMac.Cli.Tests/BindingPoints/Samples/Twist.cs.txt";
+
     [Fact]
     public void Thesis_normal_to_vectors_is_three_assignments_with_six_products_and_three_subtractions()
     {
@@ -79,7 +82,7 @@ public sealed class Generate_Rewrites : IDisposable
     public void Second_run_changes_no_byte()
     {
         var path = _temp.Write("Normals.cs", NormalFile);
-        var twist = _temp.Write("sub/Twist.cs", File.ReadAllText(Path.Combine(SharedDsl.RepositoryRoot, "src/Twister/Twist.cs")));
+        var twist = _temp.Write("sub/Twist.cs", File.ReadAllText(Path.Combine(SharedDsl.RepositoryRoot, TwistSample)));
         Assert.Equal(0, Tool.Generate([_temp.Path]).Exit);
         var first = (File.ReadAllBytes(path), File.ReadAllBytes(twist));
         var stamp = File.GetLastWriteTimeUtc(path);
@@ -113,7 +116,7 @@ public sealed class Generate_Rewrites : IDisposable
     [Fact]
     public void Temporaries_avoid_every_identifier_of_the_file()
     {
-        var source = File.ReadAllText(Path.Combine(SharedDsl.RepositoryRoot, "src/Twister/Twist.cs"))
+        var source = File.ReadAllText(Path.Combine(SharedDsl.RepositoryRoot, TwistSample))
             .Replace("var ct = Translation;", "var ct = Translation; var tmp0 = 0.0; var gmacTmp3 = tmp0;");
         var path = _temp.Write("Twist.cs", source);
 
@@ -171,7 +174,7 @@ public sealed class Generate_Rewrites : IDisposable
     [Fact]
     public void Two_regions_in_one_method_get_distinct_temporaries_and_the_result_compiles_in_the_verifier()
     {
-        var twist = File.ReadAllText(Path.Combine(SharedDsl.RepositoryRoot, "src/Twister/Twist.cs"));
+        var twist = File.ReadAllText(Path.Combine(SharedDsl.RepositoryRoot, TwistSample));
         var start = twist.IndexOf("        #region GMac", StringComparison.Ordinal);
         var end = twist.IndexOf("#endregion", start, StringComparison.Ordinal) + "#endregion\n".Length;
         var region = twist[start..end];

@@ -1,0 +1,211 @@
+namespace Twister;
+
+/// <summary>
+/// A full twist (thesis Figure 6-6): rotation by φ = c_r f_r(u, v) about the line through
+/// <see cref="Origin"/> along <see cref="Axis"/>, then a slide by c_t f_t(u, v) · <see cref="Axis"/>
+/// along the same line (the axis as given, as in (6.12)).
+/// </summary>
+public sealed class FullTwist : Twist
+{
+    private readonly TwistableVector _unit;
+
+    public FullTwist(TwistableVector axis, TwistablePoint origin, double angleCoefficient, ParameterMap angleMap,
+        double slideCoefficient, ParameterMap slideMap)
+    {
+        _unit = Require.UnitDirection(axis, nameof(axis));
+        Require.Finite(origin, nameof(origin));
+        Require.Finite(angleCoefficient, nameof(angleCoefficient));
+        Require.Finite(slideCoefficient, nameof(slideCoefficient));
+        Require.NotNull(angleMap, nameof(angleMap));
+        Require.NotNull(slideMap, nameof(slideMap));
+        Axis = axis;
+        Origin = origin;
+        AngleCoefficient = angleCoefficient;
+        AngleMap = angleMap;
+        SlideCoefficient = slideCoefficient;
+        SlideMap = slideMap;
+    }
+
+    /// <summary>A constant twist by <paramref name="angle"/> and <paramref name="slide"/> (the parameters of Figure 6-6).</summary>
+    public FullTwist(TwistableVector axis, TwistablePoint origin, double angle, double slide)
+        : this(axis, origin, angle, ParameterMap.One, slide, ParameterMap.One)
+    {
+    }
+
+    public TwistableVector Axis { get; }
+    public TwistablePoint Origin { get; }
+    public double AngleCoefficient { get; }
+    public ParameterMap AngleMap { get; }
+    public double SlideCoefficient { get; }
+    public ParameterMap SlideMap { get; }
+
+    public override bool IgnoresV => AngleMap.IgnoresV && SlideMap.IgnoresV;
+
+    public override TwistablePoint Apply(TwistablePoint p, double u, double v)
+    {
+        var axis = Axis;
+        var unit = _unit;
+        var origin = Origin;
+        var angle = AngleCoefficient * AngleMap.Evaluate(u, v);
+        var slide = SlideCoefficient * SlideMap.Evaluate(u, v);
+        var y = new TwistablePoint();
+
+        #region GMac : FullTwistPoint
+        //GMac.Bind("axis", "Vector3D", axis);
+        //GMac.Bind("unit", "Vector3D", unit);
+        //GMac.Bind("origin", "Vector3D", origin);
+        //GMac.Bind("angle.1", angle);
+        //GMac.Bind("slide.1", slide);
+        //GMac.Bind("x", "Vector3D", p);
+        //GMac.Bind("y", "Vector3D", y);
+        double tmp0 = Math.Cos(angle);
+        double tmp1 = Math.Sin(angle);
+        double tmp2 = tmp0 - 1.0;
+        double tmp3 = origin.x - p.x;
+        double tmp4 = tmp2 * tmp3;
+        double tmp5 = origin.y - p.y;
+        double tmp6 = p.z - origin.z;
+        double tmp7 = origin.z * tmp2;
+        double tmp8 = origin.y * tmp2;
+        y.x = unit.y * (unit.x * (tmp8 - p.y * tmp2) + tmp1 * tmp6 - unit.y * tmp4) + unit.z * (unit.x * (tmp7 - p.z * tmp2) + tmp1 * tmp5 - unit.z * tmp4) + axis.x * slide + p.x;
+        double tmp9 = unit.x * tmp3 + unit.y * tmp5 - unit.z * tmp6;
+        double tmp10 = tmp9 * tmp0 - tmp9;
+        y.y = unit.y * tmp10 + tmp1 * (-(unit.x * tmp6) - unit.z * tmp3) + axis.y * slide + p.y * tmp0 - tmp8;
+        y.z = unit.z * tmp10 + tmp1 * (unit.y * tmp3 - unit.x * tmp5) + slide * axis.z + p.z * tmp0 - tmp7;
+        #endregion
+
+        return y;
+    }
+
+    public override TwistableVector Apply(TwistableVector d, double u, double v)
+    {
+        var axis = _unit;
+        var angle = AngleCoefficient * AngleMap.Evaluate(u, v);
+        var y = new TwistableVector();
+
+        #region GMac : RotationTwistVector
+        //GMac.Bind("axis", "Vector3D", axis);
+        //GMac.Bind("angle.1", angle);
+        //GMac.Bind("d", "Vector3D", d);
+        //GMac.Bind("y", "Vector3D", y);
+        double tmp0 = Math.Cos(angle);
+        double tmp1 = Math.Sin(angle);
+        double tmp2 = tmp0 - 1.0;
+        double tmp3 = d.z * axis.x - d.x * axis.z;
+        double tmp4 = d.x * axis.y - d.y * axis.x;
+        y.x = axis.y * (tmp2 * tmp4 + d.z * tmp1) + axis.z * (-(tmp2 * tmp3) - d.y * tmp1) + d.x;
+        double tmp5 = d.y * axis.y + d.x * axis.x + d.z * axis.z;
+        double tmp6 = tmp5 - tmp0 * tmp5;
+        y.y = axis.y * tmp6 + d.y * tmp0 - tmp1 * tmp3;
+        y.z = axis.z * tmp6 + d.z * tmp0 - tmp1 * tmp4;
+        #endregion
+
+        return y;
+    }
+
+    public override TwistableBivector Apply(TwistableBivector b, double u, double v)
+    {
+        var axis = _unit;
+        var angle = AngleCoefficient * AngleMap.Evaluate(u, v);
+        var y = new TwistableBivector();
+
+        #region GMac : RotationTwistBivector
+        //GMac.Bind("axis", "Vector3D", axis);
+        //GMac.Bind("angle.1", angle);
+        //GMac.Bind("b", "Bivector3D", b);
+        //GMac.Bind("y", "Bivector3D", y);
+        double tmp0 = Math.Cos(angle);
+        double tmp1 = Math.Sin(angle);
+        double tmp2 = b.xy * axis.z + b.yz * axis.x + b.zx * axis.y;
+        double tmp3 = tmp2 - tmp2 * tmp0;
+        double tmp4 = b.yz * axis.y - b.zx * axis.x;
+        y.xy = axis.z * tmp3 + b.xy * tmp0 - tmp1 * tmp4;
+        double tmp5 = tmp0 - 1.0;
+        double tmp6 = b.xy * axis.x - b.yz * axis.z;
+        y.yz = axis.y * (tmp5 * tmp4 + b.xy * tmp1) + axis.z * (-(tmp5 * tmp6) - b.zx * tmp1) + b.yz;
+        y.zx = axis.y * tmp3 + b.zx * tmp0 - tmp1 * tmp6;
+        #endregion
+
+        return y;
+    }
+
+    public override void ApplyWithTangents(ref TwistablePoint p, ref TwistableVector du, ref TwistableVector dv, double u, double v)
+    {
+        var axis = Axis;
+        var unit = _unit;
+        var origin = Origin;
+        var angle = AngleCoefficient * AngleMap.Evaluate(u, v);
+        var slide = SlideCoefficient * SlideMap.Evaluate(u, v);
+        var angleRu = AngleCoefficient * AngleMap.DerivativeU(u, v);
+        var angleRv = AngleCoefficient * AngleMap.DerivativeV(u, v);
+        var slideRu = SlideCoefficient * SlideMap.DerivativeU(u, v);
+        var slideRv = SlideCoefficient * SlideMap.DerivativeV(u, v);
+        TwistablePoint x = p, y = new();
+        TwistableVector xu = du, xv = dv, yu = new(), yv = new();
+
+        #region GMac : FullTwistPointTangents
+        //GMac.Bind("axis", "Vector3D", axis);
+        //GMac.Bind("unit", "Vector3D", unit);
+        //GMac.Bind("origin", "Vector3D", origin);
+        //GMac.Bind("angle.1", angle);
+        //GMac.Bind("slide.1", slide);
+        //GMac.Bind("angleRu.1", angleRu);
+        //GMac.Bind("angleRv.1", angleRv);
+        //GMac.Bind("slideRu.1", slideRu);
+        //GMac.Bind("slideRv.1", slideRv);
+        //GMac.Bind("x", "Vector3D", x);
+        //GMac.Bind("du", "Vector3D", xu);
+        //GMac.Bind("dv", "Vector3D", xv);
+        //GMac.Bind("y", "Vector3D", y);
+        //GMac.Bind("yu", "Vector3D", yu);
+        //GMac.Bind("yv", "Vector3D", yv);
+        double tmp0 = Math.Cos(angle);
+        double tmp1 = Math.Sin(angle);
+        double tmp2 = tmp0 - 1.0;
+        double tmp3 = x.y - origin.y;
+        double tmp4 = x.z - origin.z;
+        double tmp5 = x.x - origin.x;
+        double tmp6 = -(tmp2 * tmp5);
+        double tmp7 = origin.z * tmp2;
+        double tmp8 = origin.y * tmp2;
+        y.x = unit.y * (unit.x * (tmp8 - x.y * tmp2) + tmp1 * tmp4 - unit.y * tmp6) + unit.z * (unit.x * (tmp7 - x.z * tmp2) - unit.z * tmp6 - tmp1 * tmp3) + axis.x * slide + x.x;
+        double tmp9 = tmp3 * unit.y + tmp4 * unit.z;
+        double tmp10 = tmp9 + tmp5 * unit.x;
+        double tmp11 = tmp10 * tmp0 - tmp10;
+        double tmp12 = tmp4 * unit.x - tmp5 * unit.z;
+        y.y = axis.y * slide + x.y * tmp0 - unit.y * tmp11 - tmp1 * tmp12 - tmp8;
+        double tmp13 = tmp5 * unit.y - tmp3 * unit.x;
+        y.z = slide * axis.z + x.z * tmp0 - unit.z * tmp11 - tmp1 * tmp13 - tmp7;
+        double tmp14 = unit.z * unit.z;
+        double tmp15 = -(tmp0 * (unit.y * tmp4 - tmp3 * unit.z)) - (tmp9 * unit.x - (tmp14 + unit.y * unit.y) * tmp5) * tmp1;
+        double tmp16 = unit.y * tmp2;
+        double tmp17 = tmp2 * tmp14 + unit.y * tmp16 + 1.0;
+        double tmp18 = xu.z * unit.z;
+        yu.x = xu.x * tmp17 + unit.x * (-(xu.y * tmp16) - tmp2 * tmp18) + tmp1 * (xu.z * unit.y - xu.y * unit.z) + axis.x * slideRu - angleRu * tmp15;
+        double tmp19 = tmp18 + xu.y * unit.y + xu.x * unit.x;
+        double tmp20 = tmp19 * tmp0 - tmp19;
+        double tmp21 = (unit.y * tmp10 - tmp3) * tmp1 - tmp12 * tmp0;
+        yu.y = angleRu * tmp21 + tmp1 * (xu.x * unit.z - xu.z * unit.x) + axis.y * slideRu + xu.y * tmp0 - unit.y * tmp20;
+        double tmp22 = (unit.z * tmp10 - tmp4) * tmp1 - tmp13 * tmp0;
+        yu.z = angleRu * tmp22 + tmp1 * (xu.y * unit.x - xu.x * unit.y) + slideRu * axis.z + xu.z * tmp0 - unit.z * tmp20;
+        double tmp23 = unit.z * xv.z;
+        yv.x = xv.x * tmp17 + unit.x * (-(xv.y * tmp16) - tmp2 * tmp23) + tmp1 * (xv.z * unit.y - xv.y * unit.z) + axis.x * slideRv - angleRv * tmp15;
+        double tmp24 = xv.y * unit.y + xv.x * unit.x + tmp23;
+        double tmp25 = tmp24 * tmp0 - tmp24;
+        yv.y = angleRv * tmp21 + tmp1 * (xv.x * unit.z - xv.z * unit.x) + axis.y * slideRv + xv.y * tmp0 - unit.y * tmp25;
+        yv.z = angleRv * tmp22 + tmp1 * (xv.y * unit.x - xv.x * unit.y) + slideRv * axis.z + xv.z * tmp0 - unit.z * tmp25;
+        #endregion
+
+        p = y;
+        du = yu;
+        dv = yv;
+    }
+
+    /// <summary>
+    /// The axis moves as a direction, so the slide c_t f_t · axis moves with it; a reflection turns
+    /// the sense of rotation around.
+    /// </summary>
+    protected internal override Twist TransformedBy(Twist by, double u, double v) =>
+        new FullTwist(by.Apply(Axis, u, v), by.Apply(Origin, u, v), by.PreservesOrientation ? AngleCoefficient : -AngleCoefficient,
+            AngleMap, SlideCoefficient, SlideMap);
+}

@@ -1,0 +1,186 @@
+namespace Twister;
+
+/// <summary>(6.13) rotation by φ = c_r f_r(u, v) about the line through <see cref="Origin"/> along <see cref="Axis"/>.</summary>
+public sealed class RotationTwist : Twist
+{
+    private readonly TwistableVector _unit;
+
+    public RotationTwist(TwistableVector axis, TwistablePoint origin, double coefficient, ParameterMap map)
+    {
+        _unit = Require.UnitDirection(axis, nameof(axis));
+        Require.Finite(origin, nameof(origin));
+        Require.Finite(coefficient, nameof(coefficient));
+        Require.NotNull(map, nameof(map));
+        Axis = axis;
+        Origin = origin;
+        Coefficient = coefficient;
+        Map = map;
+    }
+
+    public static RotationTwist AboutX(double coefficient, ParameterMap map) => new(new(1, 0, 0), default, coefficient, map);
+    public static RotationTwist AboutY(double coefficient, ParameterMap map) => new(new(0, 1, 0), default, coefficient, map);
+    public static RotationTwist AboutZ(double coefficient, ParameterMap map) => new(new(0, 0, 1), default, coefficient, map);
+
+    public TwistableVector Axis { get; }
+    public TwistablePoint Origin { get; }
+    public double Coefficient { get; }
+    public ParameterMap Map { get; }
+
+    public override bool IgnoresV => Map.IgnoresV;
+
+    public override TwistablePoint Apply(TwistablePoint p, double u, double v)
+    {
+        var axis = _unit;
+        var origin = Origin;
+        var angle = Coefficient * Map.Evaluate(u, v);
+        var y = new TwistablePoint();
+
+        #region GMac : RotationTwistPoint
+        //GMac.Bind("axis", "Vector3D", axis);
+        //GMac.Bind("origin", "Vector3D", origin);
+        //GMac.Bind("angle.1", angle);
+        //GMac.Bind("x", "Vector3D", p);
+        //GMac.Bind("y", "Vector3D", y);
+        double tmp0 = Math.Cos(angle);
+        double tmp1 = Math.Sin(angle);
+        double tmp2 = tmp0 - 1.0;
+        double tmp3 = origin.x - p.x;
+        double tmp4 = tmp2 * tmp3;
+        double tmp5 = origin.y - p.y;
+        double tmp6 = p.z - origin.z;
+        double tmp7 = origin.z * tmp2;
+        double tmp8 = origin.y * tmp2;
+        y.x = axis.y * (axis.x * (tmp8 - p.y * tmp2) + tmp1 * tmp6 - axis.y * tmp4) + axis.z * (axis.x * (tmp7 - p.z * tmp2) + tmp1 * tmp5 - axis.z * tmp4) + p.x;
+        double tmp9 = axis.z * tmp6 - axis.y * tmp5 - axis.x * tmp3;
+        double tmp10 = tmp0 * tmp9 - tmp9;
+        y.y = tmp1 * (-(axis.x * tmp6) - axis.z * tmp3) + p.y * tmp0 - axis.y * tmp10 - tmp8;
+        y.z = tmp1 * (axis.y * tmp3 - axis.x * tmp5) + p.z * tmp0 - axis.z * tmp10 - tmp7;
+        #endregion
+
+        return y;
+    }
+
+    public override TwistableVector Apply(TwistableVector d, double u, double v)
+    {
+        var axis = _unit;
+        var angle = Coefficient * Map.Evaluate(u, v);
+        var y = new TwistableVector();
+
+        #region GMac : RotationTwistVector
+        //GMac.Bind("axis", "Vector3D", axis);
+        //GMac.Bind("angle.1", angle);
+        //GMac.Bind("d", "Vector3D", d);
+        //GMac.Bind("y", "Vector3D", y);
+        double tmp0 = Math.Cos(angle);
+        double tmp1 = Math.Sin(angle);
+        double tmp2 = tmp0 - 1.0;
+        double tmp3 = d.z * axis.x - d.x * axis.z;
+        double tmp4 = d.x * axis.y - d.y * axis.x;
+        y.x = axis.y * (tmp2 * tmp4 + d.z * tmp1) + axis.z * (-(tmp2 * tmp3) - d.y * tmp1) + d.x;
+        double tmp5 = d.y * axis.y + d.x * axis.x + d.z * axis.z;
+        double tmp6 = tmp5 - tmp0 * tmp5;
+        y.y = axis.y * tmp6 + d.y * tmp0 - tmp1 * tmp3;
+        y.z = axis.z * tmp6 + d.z * tmp0 - tmp1 * tmp4;
+        #endregion
+
+        return y;
+    }
+
+    public override TwistableBivector Apply(TwistableBivector b, double u, double v)
+    {
+        var axis = _unit;
+        var angle = Coefficient * Map.Evaluate(u, v);
+        var y = new TwistableBivector();
+
+        #region GMac : RotationTwistBivector
+        //GMac.Bind("axis", "Vector3D", axis);
+        //GMac.Bind("angle.1", angle);
+        //GMac.Bind("b", "Bivector3D", b);
+        //GMac.Bind("y", "Bivector3D", y);
+        double tmp0 = Math.Cos(angle);
+        double tmp1 = Math.Sin(angle);
+        double tmp2 = b.xy * axis.z + b.yz * axis.x + b.zx * axis.y;
+        double tmp3 = tmp2 - tmp2 * tmp0;
+        double tmp4 = b.yz * axis.y - b.zx * axis.x;
+        y.xy = axis.z * tmp3 + b.xy * tmp0 - tmp1 * tmp4;
+        double tmp5 = tmp0 - 1.0;
+        double tmp6 = b.xy * axis.x - b.yz * axis.z;
+        y.yz = axis.y * (tmp5 * tmp4 + b.xy * tmp1) + axis.z * (-(tmp5 * tmp6) - b.zx * tmp1) + b.yz;
+        y.zx = axis.y * tmp3 + b.zx * tmp0 - tmp1 * tmp6;
+        #endregion
+
+        return y;
+    }
+
+    public override void ApplyWithTangents(ref TwistablePoint p, ref TwistableVector du, ref TwistableVector dv, double u, double v)
+    {
+        var axis = _unit;
+        var origin = Origin;
+        var angle = Coefficient * Map.Evaluate(u, v);
+        var ru = Coefficient * Map.DerivativeU(u, v);
+        var rv = Coefficient * Map.DerivativeV(u, v);
+        TwistablePoint x = p, y = new();
+        TwistableVector xu = du, xv = dv, yu = new(), yv = new();
+
+        #region GMac : RotationTwistPointTangents
+        //GMac.Bind("axis", "Vector3D", axis);
+        //GMac.Bind("origin", "Vector3D", origin);
+        //GMac.Bind("angle.1", angle);
+        //GMac.Bind("ru.1", ru);
+        //GMac.Bind("rv.1", rv);
+        //GMac.Bind("x", "Vector3D", x);
+        //GMac.Bind("du", "Vector3D", xu);
+        //GMac.Bind("dv", "Vector3D", xv);
+        //GMac.Bind("y", "Vector3D", y);
+        //GMac.Bind("yu", "Vector3D", yu);
+        //GMac.Bind("yv", "Vector3D", yv);
+        double tmp0 = Math.Cos(angle);
+        double tmp1 = Math.Sin(angle);
+        double tmp2 = tmp0 - 1.0;
+        double tmp3 = origin.y - x.y;
+        double tmp4 = origin.z - x.z;
+        double tmp5 = x.x - origin.x;
+        double tmp6 = tmp2 * tmp5;
+        double tmp7 = tmp3 * tmp1;
+        double tmp8 = origin.z * tmp2;
+        double tmp9 = tmp4 * tmp1;
+        double tmp10 = origin.y * tmp2;
+        y.x = axis.y * (axis.x * (tmp10 - x.y * tmp2) + axis.y * tmp6 - tmp9) + axis.z * (axis.x * (tmp8 - x.z * tmp2) + axis.z * tmp6 + tmp7) + x.x;
+        double tmp11 = tmp4 * axis.z + tmp3 * axis.y;
+        double tmp12 = tmp11 - tmp5 * axis.x;
+        double tmp13 = tmp12 - tmp12 * tmp0;
+        double tmp14 = tmp5 * axis.z;
+        double tmp15 = tmp4 * axis.x + tmp14;
+        y.y = tmp1 * tmp15 + x.y * tmp0 - axis.y * tmp13 - tmp10;
+        double tmp16 = tmp5 * axis.y;
+        double tmp17 = -(tmp3 * axis.x) - tmp16;
+        y.z = tmp1 * tmp17 + x.z * tmp0 - axis.z * tmp13 - tmp8;
+        double tmp18 = (tmp3 * axis.z - axis.y * tmp4) * tmp0 + (-(axis.y * tmp16) - axis.z * tmp14 - tmp11 * axis.x) * tmp1;
+        double tmp19 = axis.x * tmp2;
+        double tmp20 = xu.x * axis.y;
+        double tmp21 = xu.x * axis.z;
+        yu.x = ru * tmp18 + axis.y * (tmp2 * tmp20 + xu.z * tmp1 - xu.y * tmp19) + axis.z * (tmp2 * tmp21 - xu.z * tmp19 - xu.y * tmp1) + xu.x;
+        double tmp22 = tmp1 * tmp12;
+        double tmp23 = xu.y * axis.y + xu.z * axis.z + xu.x * axis.x;
+        double tmp24 = tmp23 - tmp23 * tmp0 - ru * tmp22;
+        double tmp25 = -tmp7 - tmp15 * tmp0;
+        yu.y = axis.y * tmp24 + tmp1 * (tmp21 - axis.x * xu.z) + xu.y * tmp0 - ru * tmp25;
+        double tmp26 = -(tmp17 * tmp0) - tmp9;
+        yu.z = axis.z * tmp24 + tmp1 * (axis.x * xu.y - tmp20) + xu.z * tmp0 - ru * tmp26;
+        double tmp27 = xv.x * tmp2;
+        yv.x = rv * tmp18 + axis.y * (axis.y * tmp27 + xv.z * tmp1 - xv.y * tmp19) + axis.z * (axis.z * tmp27 - xv.z * tmp19 - xv.y * tmp1) + xv.x;
+        double tmp28 = xv.x * axis.x + xv.y * axis.y + xv.z * axis.z;
+        double tmp29 = tmp28 - tmp28 * tmp0 - rv * tmp22;
+        yv.y = axis.y * tmp29 + tmp1 * (xv.x * axis.z - axis.x * xv.z) + xv.y * tmp0 - rv * tmp25;
+        yv.z = axis.z * tmp29 + tmp1 * (axis.x * xv.y - axis.y * xv.x) + xv.z * tmp0 - rv * tmp26;
+        #endregion
+
+        p = y;
+        du = yu;
+        dv = yv;
+    }
+
+    /// <summary>A reflection turns the sense of rotation about the reflected axis around.</summary>
+    protected internal override Twist TransformedBy(Twist by, double u, double v) =>
+        new RotationTwist(by.Apply(Axis, u, v), by.Apply(Origin, u, v), by.PreservesOrientation ? Coefficient : -Coefficient, Map);
+}
