@@ -83,29 +83,24 @@ public class TessellationBenchmarks
 
         public TwistablePoint PointAt(double u, double v)
         {
-            var (f, _, _) = Parts(u, v);
-            return new(f[0], f[1], f[2]);
+            double theta = 2 * Math.PI * Turns * u, phi = 2 * Math.PI * v;
+            double scale = Math.Exp(Growth * theta), ring = Radius + Tube * Math.Cos(phi);
+            return new(scale * ring * Math.Cos(theta), scale * ring * Math.Sin(theta), scale * (Tube * Math.Sin(phi) - Drop));
         }
 
         /// <summary>∂S/∂u × ∂S/∂v from the closed-form partial derivatives.</summary>
         public TwistableVector NormalAt(double u, double v)
         {
-            var (_, su, sv) = Parts(u, v);
-            return Cross(su[0], su[1], su[2], sv[0], sv[1], sv[2]);
-        }
-
-        private static (double[] S, double[] Su, double[] Sv) Parts(double u, double v)
-        {
             double theta = 2 * Math.PI * Turns * u, phi = 2 * Math.PI * v;
             double scale = Math.Exp(Growth * theta), ring = Radius + Tube * Math.Cos(phi);
-            double[] f = [ring * Math.Cos(theta), ring * Math.Sin(theta), Tube * Math.Sin(phi) - Drop];
-            double[] fTheta = [-ring * Math.Sin(theta), ring * Math.Cos(theta), 0];
-            double[] fPhi = [-Tube * Math.Sin(phi) * Math.Cos(theta), -Tube * Math.Sin(phi) * Math.Sin(theta), Tube * Math.Cos(phi)];
-            double dTheta = 2 * Math.PI * Turns, dPhi = 2 * Math.PI;
-            var s = f.Select(x => scale * x).ToArray();
-            var su = Enumerable.Range(0, 3).Select(k => dTheta * scale * (Growth * f[k] + fTheta[k])).ToArray();
-            var sv = fPhi.Select(x => dPhi * scale * x).ToArray();
-            return (s, su, sv);
+            double cosT = Math.Cos(theta), sinT = Math.Sin(theta), cosP = Math.Cos(phi), sinP = Math.Sin(phi);
+            double du = 2 * Math.PI * Turns * scale, dv = 2 * Math.PI * scale;
+
+            // S = e^(kθ) F: ∂S/∂θ = e^(kθ) (k F + ∂F/∂θ), ∂S/∂φ = e^(kθ) ∂F/∂φ.
+            double fx = ring * cosT, fy = ring * sinT, fz = Tube * sinP - Drop;
+            double ux = du * (Growth * fx - ring * sinT), uy = du * (Growth * fy + ring * cosT), uz = du * Growth * fz;
+            double vx = -dv * Tube * sinP * cosT, vy = -dv * Tube * sinP * sinT, vz = dv * Tube * cosP;
+            return Cross(ux, uy, uz, vx, vy, vz);
         }
     }
 }
