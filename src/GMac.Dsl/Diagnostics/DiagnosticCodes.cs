@@ -56,7 +56,7 @@ public static class DiagnosticCodes
     public static readonly DiagnosticDescriptor BoundTwice = new("GMAC0305", Error, "a coefficient is bound twice", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor UnusedAssumption = new("GMAC0306", Error, "an AssumeMin or AssumeMax names an expression no binding reads", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor NoOutputBound = new("GMAC0307", Error, "a binding point binds no output, so there is nothing to generate", ReportedBy.Generation);
-    public static readonly DiagnosticDescriptor InvalidBindingValue = new("GMAC0308", Error, "a bound value is neither a number, a <C# expression> nor a scalar expression of these", ReportedBy.Generation);
+    public static readonly DiagnosticDescriptor InvalidBindingValue = new("GMAC0308", Error, "a bound value is neither a number, a C# expression in angle brackets, nor a scalar expression of these", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor ClassBindingMismatch = new("GMAC0309", Error, "a class binding is unknown or on another frame than the parameter", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor CannotGenerate = new("GMAC0310", Error, "the macro cannot be evaluated for these bindings", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor OutputNotATarget = new("GMAC0311", Error, "an output is bound to an expression rather than a target it can be written to", ReportedBy.Generation);

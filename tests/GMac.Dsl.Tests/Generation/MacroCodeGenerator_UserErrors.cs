@@ -76,7 +76,7 @@ public sealed class MacroCodeGenerator_UserErrors
         var error = Assert.Single(outcome.Errors);
         Assert.Equal("GMAC0313", error.Code);
         Assert.Equal(9, error.Span.Line);
-        var at = Assert.IsType<Diagnostics.SourceSpan>(error.Cause);
+        var at = Assert.IsType<Dsl.Diagnostics.SourceSpan>(error.Cause);
         // The division "x / (x.<e1> - x.<e1>)" on line 16 of test.gmac, after "w = ".
         Assert.Equal(("test.gmac", 16, 13), (at.FilePath, at.Line, at.Column));
     }
@@ -98,7 +98,7 @@ public sealed class MacroCodeGenerator_UserErrors
         var outcome = generator.Generate("Bad", generator.DefaultBindings("Bad"), regionLine: 7);
         var error = Assert.Single(outcome.Errors);
         Assert.Equal(7, error.Span.Line);
-        var at = Assert.IsType<Diagnostics.SourceSpan>(error.Cause);
+        var at = Assert.IsType<Dsl.Diagnostics.SourceSpan>(error.Cause);
         Assert.Equal(("bad.gmac", 4), (at.FilePath, at.Line));
     }
 }
