@@ -58,6 +58,14 @@ public sealed class MacroCodeGenerator_UserErrors
     }
 
     [Fact]
+    public void Binding_errors_are_placed_in_the_file_of_the_binding_point()
+    {
+        var outcome = Generator().Generate("Norm2", [Bind("u", "e4", "<a>", 12), Bind("s", "1", "<r>", 13)], regionLine: 11, filePath: "src/K.cs");
+        var error = Assert.Single(outcome.Errors);
+        Assert.Equal("src/K.cs(12,3): error GMAC0303: 'e4' is not a blade of frame 'e3d' (basis vectors: e1, e2, e3)", error.ToString());
+    }
+
+    [Fact]
     public void Consistent_assumptions_generate()
     {
         var outcome = Generator().Generate("Norm2",
