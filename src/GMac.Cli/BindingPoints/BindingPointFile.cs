@@ -1,3 +1,5 @@
+using GMac.Dsl.Diagnostics;
+
 namespace GMac.Cli.BindingPoints;
 
 /// <summary>
@@ -9,7 +11,7 @@ internal sealed record BindingPointFile(
     SourceText Source,
     IReadOnlyList<string> Lines,
     IReadOnlyList<BindingPoint> Points,
-    IReadOnlyList<BindingDiagnostic> Diagnostics,
+    IReadOnlyList<Diagnostic> Diagnostics,
     IReadOnlySet<string> Identifiers)
 {
     public string Path => Source.Path;

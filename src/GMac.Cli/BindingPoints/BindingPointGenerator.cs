@@ -1,9 +1,11 @@
 using System.Text;
 using GMac.Core.CodeGeneration;
 using GMac.Dsl.BindingPoints;
+using GMac.Dsl.Diagnostics;
 using GMac.Dsl.Generation;
 using Microsoft.CodeAnalysis;
 using Microsoft.CodeAnalysis.CSharp;
+using Diagnostic = GMac.Dsl.Diagnostics.Diagnostic;
 
 namespace GMac.Cli.BindingPoints;
 
@@ -16,7 +18,7 @@ internal static class BindingPointGenerator
 {
     public static FileGeneration Generate(BindingPointFile file, GenerationContext context, bool includeStatistics)
     {
-        var diagnostics = new List<BindingDiagnostic>(file.Diagnostics);
+        var diagnostics = new List<Diagnostic>(file.Diagnostics);
         var regions = new List<GeneratedRegion>();
         // Temporaries avoid the names of every bind line, the names in the region's scope, and the
         // temporaries of regions already generated in the same member. All of these come from the
@@ -32,30 +34,33 @@ internal static class BindingPointGenerator
                 foreach (var token in SyntaxFactory.ParseTokens(region.Code).Where(t => t.IsKind(SyntaxKind.IdentifierToken)))
                     earlier.Add(token.ValueText);
         }
-        diagnostics.Sort((a, b) => a.Line != b.Line ? a.Line.CompareTo(b.Line) : a.Column.CompareTo(b.Column));
+        diagnostics.Sort((a, b) => (a.Span.Line, a.Span.Column).CompareTo((b.Span.Line, b.Span.Column)));
         if (diagnostics.Count > 0) return new FileGeneration(file, file.Source.Text, regions, diagnostics);
         return new FileGeneration(file, Splice(file, regions), regions, diagnostics);
     }
 
     private static GeneratedRegion GenerateRegion(BindingPointFile file, BindingPoint point, GenerationContext context, bool includeStatistics,
-        Func<string, bool> isTaken, List<BindingDiagnostic> diagnostics)
+        Func<string, bool> isTaken, List<Diagnostic> diagnostics)
     {
         GenerationOutcome outcome;
         try
         {
-            outcome = BindingTextCheck.Generate(context, point.MacroName, point.Specs, point.RegionLineNumber);
+            outcome = BindingTextCheck.Generate(context, point.MacroName, point.Specs, point.RegionLineNumber, file.Path);
         }
         catch (Exception e) when (e is not OutOfMemoryException)
         {
             // A defect of the generator must not take the other files down: report it here.
-            diagnostics.Add(new(file.Path, point.RegionLineNumber, point.RegionColumn, "GMAC0409", $"internal error while generating '{point.MacroName}': {e.GetType().Name}: {e.Message}"));
+            diagnostics.Add(new(DiagnosticCodes.InternalError, SourceSpan.At(file.Path, point.RegionLineNumber, point.RegionColumn), $"internal error while generating '{point.MacroName}': {e.GetType().Name}: {e.Message}"));
             return new GeneratedRegion(point, null, null);
         }
         // Errors about the region as a whole come at its line, column 1: point at the #region itself.
+        // One caused in the DSL is reported there, so the build shows the line to fix.
         foreach (var e in outcome.Errors)
-            diagnostics.Add(e.Source is { } at
-                ? new(at.FilePath, at.Line, at.Column, e.Code, $"{e.Message} (binding point at {file.Path}({e.Line},{e.Column}))")
-                : new(file.Path, e.Line, e.Line == point.RegionLineNumber && e.Column == 1 ? point.RegionColumn : e.Column, e.Code, e.Message));
+        {
+            if (e.Cause is { } cause) diagnostics.Add(new(e.Descriptor, cause, $"{e.Message} (binding point at {e.Span.FilePath}({e.Span.Line},{e.Span.Column}))"));
+            else if (e.Span.Line == point.RegionLineNumber && e.Span.Column == 1) diagnostics.Add(e with { Span = e.Span with { Column = point.RegionColumn } });
+            else diagnostics.Add(e);
+        }
         if (!outcome.Succeeded) return new GeneratedRegion(point, outcome, null);
         try
         {
@@ -70,7 +75,7 @@ internal static class BindingPointGenerator
         }
         catch (InvalidOperationException e)
         {
-            diagnostics.Add(new(file.Path, point.RegionLineNumber, point.RegionColumn, "GMAC0409", $"cannot print the code of macro '{point.MacroName}': {e.Message}"));
+            diagnostics.Add(new(DiagnosticCodes.InternalError, SourceSpan.At(file.Path, point.RegionLineNumber, point.RegionColumn), $"cannot print the code of macro '{point.MacroName}': {e.Message}"));
             return new GeneratedRegion(point, outcome, null);
         }
     }

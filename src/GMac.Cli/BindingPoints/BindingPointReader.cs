@@ -1,9 +1,11 @@
 using System.Text.RegularExpressions;
 using GMac.Dsl.BindingPoints;
+using GMac.Dsl.Diagnostics;
 using GMac.Dsl.Generation;
 using Microsoft.CodeAnalysis;
 using Microsoft.CodeAnalysis.CSharp;
 using Microsoft.CodeAnalysis.CSharp.Syntax;
+using Diagnostic = GMac.Dsl.Diagnostics.Diagnostic;
 
 namespace GMac.Cli.BindingPoints;
 
@@ -40,7 +42,7 @@ internal static partial class BindingPointReader
         var root = tree.GetRoot();
         var text = tree.GetText();
         var lines = SplitLines(text);
-        var diagnostics = new List<BindingDiagnostic>();
+        var diagnostics = new List<Diagnostic>();
         var open = new Stack<(int Line, int Column, string? Macro, int Position)>();
         var found = new List<(string Macro, int Line, int Column, int EndLine, int Position)>();
 
@@ -63,14 +65,14 @@ internal static partial class BindingPointReader
                     macro = header.Groups["name"].Value;
                     if (!Identifier().IsMatch(macro))
                     {
-                        diagnostics.Add(new(path, line + 1, column, "GMAC0408", $"'#region GMac :' must be followed by a macro name, not '{macro}'"));
+                        diagnostics.Add(new(DiagnosticCodes.InvalidMacroName, SourceSpan.At(path, line + 1, column), $"'#region GMac :' must be followed by a macro name, not '{macro}'"));
                         macro = "";
                     }
                 }
                 if (open.Any(o => o.Macro is not null))
                 {
                     var outer = open.First(o => o.Macro is not null);
-                    diagnostics.Add(new(path, line + 1, column, "GMAC0403",
+                    diagnostics.Add(new(DiagnosticCodes.NestedRegion, SourceSpan.At(path, line + 1, column),
                         $"region nested inside the GMac region of line {outer.Line + 1}: its body is generated, so it cannot hold other regions"));
                 }
                 open.Push((line, column, macro, directive.SpanStart));
@@ -78,7 +80,7 @@ internal static partial class BindingPointReader
             }
             if (open.Count == 0)
             {
-                diagnostics.Add(new(path, line + 1, column, "GMAC0401", "#endregion without a matching #region"));
+                diagnostics.Add(new(DiagnosticCodes.UnmatchedEndRegion, SourceSpan.At(path, line + 1, column), "#endregion without a matching #region"));
                 continue;
             }
             var region = open.Pop();
@@ -86,13 +88,13 @@ internal static partial class BindingPointReader
                 found.Add((name, region.Line, region.Column, line, region.Position));
         }
         foreach (var region in open)
-            diagnostics.Add(new(path, region.Line + 1, region.Column, "GMAC0402", "#region without a matching #endregion"));
+            diagnostics.Add(new(DiagnosticCodes.UnmatchedRegion, SourceSpan.At(path, region.Line + 1, region.Column), "#region without a matching #endregion"));
 
         var bodies = found.Select(r => (Start: text.Lines[r.Line].End, End: text.Lines[r.EndLine].Start)).ToList();
         var scopes = new RegionScopes(root, bodies);
         var points = found.Select(r => ReadPoint(path, lines, r.Macro, r.Line, r.Column, r.EndLine, scopes.Of(r.Position), diagnostics)).ToList();
         var bindNames = points.SelectMany(p => p.Bindings).SelectMany(b => BoundIdentifiers(b.Spec)).ToHashSet(StringComparer.Ordinal);
-        diagnostics.Sort((a, b) => a.Line != b.Line ? a.Line.CompareTo(b.Line) : a.Column.CompareTo(b.Column));
+        diagnostics.Sort((a, b) => (a.Span.Line, a.Span.Column).CompareTo((b.Span.Line, b.Span.Column)));
         return new BindingPointFile(source, lines, points, diagnostics, bindNames);
     }
 
@@ -117,7 +119,7 @@ internal static partial class BindingPointReader
         text.Lines.Select(l => text.ToString(l.SpanIncludingLineBreak)).ToList();
 
     private static BindingPoint ReadPoint(string path, IReadOnlyList<string> lines, string macro, int regionLine, int regionColumn, int endLine,
-        RegionScope scope, List<BindingDiagnostic> diagnostics)
+        RegionScope scope, List<Diagnostic> diagnostics)
     {
         var indent = LeadingWhiteSpace(lines[regionLine]);
         var bindings = new List<BindingLine>();
@@ -125,7 +127,7 @@ internal static partial class BindingPointReader
         {
             if (BindingLineReader.Read(lines[i], i + 1) is not { } read) continue;
             if (read.Spec is { } spec) bindings.Add(new BindingLine(spec));
-            else diagnostics.Add(new(path, read.Line, read.Column, "GMAC0404", read.Error!));
+            else diagnostics.Add(new(DiagnosticCodes.InvalidBindingLine, SourceSpan.At(path, read.Line, read.Column), read.Error!));
         }
         return new BindingPoint(macro, regionLine, endLine, indent, bindings, regionColumn, scope);
     }

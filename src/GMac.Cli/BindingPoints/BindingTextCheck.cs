@@ -4,6 +4,10 @@ using GMac.Dsl.Semantics;
 using Microsoft.CodeAnalysis;
 using Microsoft.CodeAnalysis.CSharp;
 using Microsoft.CodeAnalysis.CSharp.Syntax;
+using Diagnostic = GMac.Dsl.Diagnostics.Diagnostic;
+using DiagnosticCodes = GMac.Dsl.Diagnostics.DiagnosticCodes;
+using DiagnosticDescriptor = GMac.Dsl.Diagnostics.DiagnosticDescriptor;
+using SourceSpan = GMac.Dsl.Diagnostics.SourceSpan;
 
 namespace GMac.Cli.BindingPoints;
 
@@ -14,53 +18,50 @@ namespace GMac.Cli.BindingPoints;
 /// </summary>
 internal static class BindingTextCheck
 {
-    public const string NotAnExpression = "GMAC0412";
-    public const string NotAssignable = "GMAC0405";
-
     /// <summary>Generates after checking the bindings' C# text; both <c>generate</c> and <c>show</c> go through here.</summary>
-    public static GenerationOutcome Generate(GenerationContext context, string macroName, IReadOnlyList<BindingSpec> specs, int regionLine)
+    public static GenerationOutcome Generate(GenerationContext context, string macroName, IReadOnlyList<BindingSpec> specs, int regionLine, string filePath)
     {
-        if (context.Project.Model.Macros.TryGetValue(macroName, out var macro) && Check(macro, specs) is { Count: > 0 } errors)
+        if (context.Project.Model.Macros.TryGetValue(macroName, out var macro) && Check(macro, specs, filePath) is { Count: > 0 } errors)
             return new GenerationOutcome(null, errors, null);
-        return context.Generator.Generate(macroName, specs, regionLine);
+        return context.Generator.Generate(macroName, specs, regionLine, filePath);
     }
 
     /// <summary>One error per binding whose C# text cannot be pasted as it is, at the binding's line and column.</summary>
-    public static List<GenerationError> Check(MacroSymbol macro, IEnumerable<BindingSpec> specs)
+    public static List<Diagnostic> Check(MacroSymbol macro, IEnumerable<BindingSpec> specs, string filePath)
     {
         var outputs = macro.Outputs.Select(o => o.Name).ToHashSet(StringComparer.Ordinal);
-        var errors = new List<GenerationError>();
+        var errors = new List<Diagnostic>();
         foreach (var spec in specs)
         {
             var problem = spec switch
             {
                 CoefficientBindingSpec c when outputs.Contains(c.Parameter) => OutputProblem(c.Parameter, c.IsTemplate ? TemplateTarget(c.Value) : c.Value.Trim(), c.Value),
                 CoefficientBindingSpec c => InputProblem(c),
-                ClassBindingSpec c => ObjectProblem(c.Target) is { } objectProblem ? (NotAnExpression, objectProblem)
+                ClassBindingSpec c => ObjectProblem(c.Target) is { } objectProblem ? (DiagnosticCodes.NotAnExpression, objectProblem)
                     : outputs.Contains(c.Parameter) ? OutputProblem(c.Parameter, c.Target.Trim(), c.Target) : null,
                 _ => null,
             };
-            if (problem is { } p) errors.Add(new GenerationError(p.Code, p.Message, spec.Line, spec.Column));
+            if (problem is { } p) errors.Add(new Diagnostic(p.Descriptor, SourceSpan.At(filePath, spec.Line, spec.Column), p.Message));
         }
         return errors;
     }
 
-    private static (string Code, string Message)? OutputProblem(string parameter, string? target, string text)
+    private static (DiagnosticDescriptor Descriptor, string Message)? OutputProblem(string parameter, string? target, string text)
     {
         if (target is not null && ExpressionProblem(target) is { } problem)
-            return (NotAnExpression, $"the target '{target}' of output '{parameter}' is not one C# expression: {problem}");
+            return (DiagnosticCodes.NotAnExpression, $"the target '{target}' of output '{parameter}' is not one C# expression: {problem}");
         if (target is null || !IsAssignable(target))
-            return (NotAssignable, $"output '{parameter}' is bound to '{text}', which cannot be assigned; use a variable, field, property or element, e.g. \"<w.x>\"");
+            return (DiagnosticCodes.TargetNotAssignable, $"output '{parameter}' is bound to '{text}', which cannot be assigned; use a variable, field, property or element, e.g. \"<w.x>\"");
         return null;
     }
 
     /// <summary>Each &lt;…&gt; part of a template, or the whole of a bare value that is not a number.</summary>
-    private static (string Code, string Message)? InputProblem(CoefficientBindingSpec c)
+    private static (DiagnosticDescriptor Descriptor, string Message)? InputProblem(CoefficientBindingSpec c)
     {
         var parts = c.IsTemplate ? TemplateParts(c.Value) : Rational.TryParse(c.Value.Trim(), out _) ? [] : [c.Value];
         foreach (var part in parts)
             if (ExpressionProblem(part) is { } problem)
-                return (NotAnExpression, $"'{part.Trim()}' bound to input '{c.Parameter}' is not one C# expression: {problem}");
+                return (DiagnosticCodes.NotAnExpression, $"'{part.Trim()}' bound to input '{c.Parameter}' is not one C# expression: {problem}");
         return null;
     }
 

@@ -1,3 +1,4 @@
+using GMac.Dsl.Diagnostics;
 using SafeFiles;
 
 namespace GMac.Cli.BindingPoints;
@@ -8,7 +9,7 @@ namespace GMac.Cli.BindingPoints;
 /// </summary>
 internal static class SourceScanner
 {
-    public static (List<string> Files, List<BindingDiagnostic> Missing) Find(IReadOnlyList<string> paths)
+    public static (List<string> Files, List<Diagnostic> Missing) Find(IReadOnlyList<string> paths)
     {
         var scan = Scan(paths);
         return (scan.Files, scan.Problems);
@@ -19,8 +20,8 @@ internal static class SourceScanner
     {
         var files = new SortedSet<string>(StringComparer.Ordinal);
         var seen = new HashSet<string>(StringComparer.Ordinal);
-        var problems = new List<BindingDiagnostic>();
-        var skipped = new List<BindingDiagnostic>();
+        var problems = new List<Diagnostic>();
+        var skipped = new List<Diagnostic>();
         void Add(string file)
         {
             try
@@ -30,7 +31,7 @@ internal static class SourceScanner
             catch (IOException e)
             {
                 // the links along the path loop
-                problems.Add(new BindingDiagnostic(file, 1, 1, "GMAC0407", e.Message));
+                problems.Add(new Diagnostic(DiagnosticCodes.CannotReadSource, SourceSpan.None(file), e.Message));
             }
         }
         foreach (var path in paths)
@@ -46,15 +47,15 @@ internal static class SourceScanner
                 foreach (var file in listing.Files) Add(file);
                 foreach (var s in listing.Skipped)
                 {
-                    if (s.IsError) problems.Add(new BindingDiagnostic(s.Path, 1, 1, "GMAC0407", s.Reason));
+                    if (s.IsError) problems.Add(new Diagnostic(DiagnosticCodes.CannotReadSource, SourceSpan.None(s.Path), s.Reason));
                     else skipped.Add(Skipped(s.Path, s.Reason));
                 }
             }
-            else problems.Add(new BindingDiagnostic(path, 1, 1, "GMAC0407", $"path '{path}' does not exist"));
+            else problems.Add(new Diagnostic(DiagnosticCodes.CannotReadSource, SourceSpan.None(path), $"path '{path}' does not exist"));
         }
         return new SourceScan(files.ToList(), problems, skipped);
     }
 
-    private static BindingDiagnostic Skipped(string path, string reason) =>
-        new(Path.GetFullPath(path), 1, 1, SourceScan.SkippedCode, reason);
+    private static Diagnostic Skipped(string path, string reason) =>
+        new(DiagnosticCodes.SkippedSourceFile, SourceSpan.None(Path.GetFullPath(path)), reason);
 }

@@ -4,6 +4,7 @@ using System.Globalization;
 using System.Text;
 using GMac.Cli.BindingPoints;
 using GMac.Dsl.BindingPoints;
+using GMac.Dsl.Diagnostics;
 using SafeFiles;
 
 namespace GMac.Cli.Commands;
@@ -42,7 +43,7 @@ internal static class GenerateCommand
         var missesBefore = context.Cache.Misses;
         var scan = SourceScanner.Scan(paths);
         foreach (var m in scan.Problems) error.WriteLine(m);
-        foreach (var s in scan.Skipped) error.WriteLine(SourceScan.AsWarning(s));
+        foreach (var s in scan.Skipped) error.WriteLine(s);
         var files = scan.Files;
         int scanned = 0, regions = 0, changed = 0, failed = scan.Problems.Count, outOfDate = 0, skipped = 0;
         // A check accepts regions with or without the statistics header, so it generates them with
@@ -87,7 +88,7 @@ internal static class GenerateCommand
                 }
                 outOfDate++;
                 foreach (var r in stale)
-                    error.WriteLine(new BindingDiagnostic(path, r.Point.RegionLineNumber, 1, "GMAC0410", $"binding point '{r.Point.MacroName}' is out of date; run 'gmac generate'"));
+                    error.WriteLine(new Diagnostic(DiagnosticCodes.OutOfDate, SourceSpan.At(path, r.Point.RegionLineNumber, 1), $"binding point '{r.Point.MacroName}' is out of date; run 'gmac generate'"));
                 continue;
             }
             byte[] newBytes;
@@ -97,13 +98,13 @@ internal static class GenerateCommand
             }
             catch (EncoderFallbackException e)
             {
-                error.WriteLine(new BindingDiagnostic(path, generation.File.Points[0].RegionLineNumber, 1, "GMAC0406", $"cannot write the generated code in the file's encoding ({generation.File.Source.Encoding.WebName}): {e.Message}; the file is unchanged"));
+                error.WriteLine(new Diagnostic(DiagnosticCodes.CannotWrite, SourceSpan.At(path, generation.File.Points[0].RegionLineNumber, 1), $"cannot write the generated code in the file's encoding ({generation.File.Source.Encoding.WebName}): {e.Message}; the file is unchanged"));
                 failed++;
                 continue;
             }
             if (AtomicFile.TryWrite(path, newBytes) is { } why)
             {
-                error.WriteLine(new BindingDiagnostic(path, generation.File.Points[0].RegionLineNumber, 1, "GMAC0406", $"cannot write the generated code: {why}; the file is unchanged"));
+                error.WriteLine(new Diagnostic(DiagnosticCodes.CannotWrite, SourceSpan.At(path, generation.File.Points[0].RegionLineNumber, 1), $"cannot write the generated code: {why}; the file is unchanged"));
                 failed++;
                 continue;
             }
@@ -141,7 +142,7 @@ internal static class GenerateCommand
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
-            error.WriteLine(new BindingDiagnostic(path, 1, 1, "GMAC0407", $"cannot read file: {e.Message}"));
+            error.WriteLine(new Diagnostic(DiagnosticCodes.CannotReadSource, SourceSpan.None(path), $"cannot read file: {e.Message}"));
             return null;
         }
         var file = BindingPointReader.MayContainBindingPoints(source.Text)

@@ -3,6 +3,7 @@ using System.CommandLine.Parsing;
 using GMac.Cli.BindingPoints;
 using GMac.Core.CodeGeneration;
 using GMac.Core.Numerics;
+using GMac.Dsl.Diagnostics;
 using GMac.Dsl.Generation;
 
 namespace GMac.Cli.Commands;
@@ -76,23 +77,25 @@ internal static class ShowCommand
         // declaration (or the DSL folder for an unknown macro); --bind options are quoted.
         var macroAt = context.Project.Model.Macros.TryGetValue(macro, out var symbol)
             ? symbol.Declaration
-            : Dsl.Diagnostics.SourceSpan.None(dsl);
+            : SourceSpan.None(dsl);
         GenerationOutcome outcome;
         try
         {
-            outcome = BindingTextCheck.Generate(context, macro, specs, 0);
+            // The specs come from options, not a file: their "line" is the option's number.
+            outcome = BindingTextCheck.Generate(context, macro, specs, 0, filePath: "");
         }
         catch (Exception e) when (e is not OutOfMemoryException)
         {
-            error.WriteLine(Diagnostic(macroAt, "GMAC0409", $"internal error while generating '{macro}': {e.GetType().Name}: {e.Message}"));
+            error.WriteLine(new Diagnostic(DiagnosticCodes.InternalError, macroAt, $"internal error while generating '{macro}': {e.GetType().Name}: {e.Message}"));
             return ExitCodes.Diagnostics;
         }
         if (!outcome.Succeeded)
         {
             foreach (var e in outcome.Errors)
             {
-                var option = e.Line > 0 && e.Line <= values.Count ? $"{values[e.Line - 1].Option} {values[e.Line - 1].Value}: " : "";
-                error.WriteLine(Diagnostic(e.Source ?? macroAt, e.Code, option + e.Message));
+                var line = e.Span.Line;
+                var option = line > 0 && line <= values.Count ? $"{values[line - 1].Option} {values[line - 1].Value}: " : "";
+                error.WriteLine(new Diagnostic(e.Descriptor, e.Cause ?? macroAt, option + e.Message));
             }
             return ExitCodes.Diagnostics;
         }
@@ -103,9 +106,6 @@ internal static class ShowCommand
         }));
         return ExitCodes.Success;
     }
-
-    private static string Diagnostic(Dsl.Diagnostics.SourceSpan at, string code, string message) =>
-        $"{at.FilePath}({at.Line},{at.Column}): error {code}: {message}";
 
     /// <summary>One <c>--bind</c>, <c>--min</c> or <c>--max</c>; the spec's line is its position among them.</summary>
     private static BindingSpec? ParseSpec(string option, string text, int index)

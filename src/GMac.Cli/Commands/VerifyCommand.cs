@@ -2,6 +2,7 @@ using System.CommandLine;
 using System.Globalization;
 using GMac.Cli.BindingPoints;
 using GMac.Cli.Verification;
+using GMac.Dsl.Diagnostics;
 using GMac.Dsl.Generation;
 
 namespace GMac.Cli.Commands;
@@ -78,7 +79,7 @@ internal static class VerifyCommand
             var (kernel, compileError) = kernels[k];
             if (kernel is null)
             {
-                error.WriteLine(new BindingDiagnostic(path, point.RegionLineNumber, point.RegionColumn, "GMAC0421", $"the code of '{point.MacroName}' does not compile: {compileError}"));
+                error.WriteLine(new Diagnostic(DiagnosticCodes.KernelDoesNotCompile, SourceSpan.At(path, point.RegionLineNumber, point.RegionColumn), $"the code of '{point.MacroName}' does not compile: {compileError}"));
                 failures++;
                 continue;
             }
@@ -89,7 +90,7 @@ internal static class VerifyCommand
             var result = RegionVerifier.Verify(kernel, plan, assumptions, normalized, tolerance, seed + k);
             if (!result.Passed)
             {
-                error.WriteLine(new BindingDiagnostic(path, point.RegionLineNumber, point.RegionColumn, "GMAC0420", $"'{point.MacroName}' disagrees with the numeric engine: {result.Failure}"));
+                error.WriteLine(new Diagnostic(DiagnosticCodes.DisagreesWithEngine, SourceSpan.At(path, point.RegionLineNumber, point.RegionColumn), $"'{point.MacroName}' disagrees with the numeric engine: {result.Failure}"));
                 failures++;
                 continue;
             }

@@ -3,6 +3,8 @@ using GMac.Cli.BindingPoints;
 using Microsoft.CodeAnalysis;
 using Microsoft.CodeAnalysis.CSharp;
 using Microsoft.CodeAnalysis.CSharp.Syntax;
+using DiagnosticCodes = GMac.Dsl.Diagnostics.DiagnosticCodes;
+using SourceSpan = GMac.Dsl.Diagnostics.SourceSpan;
 
 namespace GMac.Cli.Verification;
 
@@ -14,8 +16,6 @@ namespace GMac.Cli.Verification;
 /// </summary>
 internal static partial class ProjectContextCompiler
 {
-    public const string Code = "GMAC0422";
-
     private static readonly CSharpParseOptions ParseOptions = new(LanguageVersion.Latest);
 
     /// <summary>The global usings the .NET SDK adds when a project enables implicit usings.</summary>
@@ -74,7 +74,7 @@ internal static partial class ProjectContextCompiler
                 if (error is null) continue;
                 var at = error.Location.GetLineSpan().StartLinePosition;
                 var statement = tree.GetText().Lines[at.Line].ToString().Trim();
-                yield return new RegionCompileFailure(region, new BindingDiagnostic(path, at.Line + 1, at.Character + 1, Code,
+                yield return new RegionCompileFailure(region, new GMac.Dsl.Diagnostics.Diagnostic(DiagnosticCodes.DoesNotCompileInProject, SourceSpan.At(path, at.Line + 1, at.Character + 1),
                     $"the code of '{region.Point.MacroName}' (region of line {region.Point.RegionLineNumber}) does not compile in its project: {error.Id}: {error.GetMessage()} in '{statement}'"));
             }
         }

@@ -1,6 +1,7 @@
 using GMac.Cli.BindingPoints;
+using GMac.Dsl.Diagnostics;
 
 namespace GMac.Cli.Verification;
 
 /// <summary>A region whose code does not compile where it is written, with the first compiler error inside it.</summary>
-internal sealed record RegionCompileFailure(GeneratedRegion Region, BindingDiagnostic Diagnostic);
+internal sealed record RegionCompileFailure(GeneratedRegion Region, Diagnostic Diagnostic);

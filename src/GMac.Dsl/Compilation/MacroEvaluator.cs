@@ -99,11 +99,11 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
             }
             catch (AlgebraException e)
             {
-                throw new MacroEvaluationException(macro.Statements[i].Span, e.Message, e.ExceedsLimit ? GenerationCodes.TooLarge : null);
+                throw new MacroEvaluationException(macro.Statements[i].Span, e.Message, e.ExceedsLimit ? DiagnosticCodes.TooLarge : null);
             }
             catch (DivideByZeroException)
             {
-                throw new MacroEvaluationException(macro.Statements[i].Span, DivisionByZeroMessage, GenerationCodes.DivisionByZero);
+                throw new MacroEvaluationException(macro.Statements[i].Span, DivisionByZeroMessage, DiagnosticCodes.GeneratedDivisionByZero);
             }
         }
         return env;
@@ -295,7 +295,7 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
         }
         catch (DivideByZeroException)
         {
-            throw new MacroEvaluationException(b.Span, DivisionByZeroMessage, GenerationCodes.DivisionByZero);
+            throw new MacroEvaluationException(b.Span, DivisionByZeroMessage, DiagnosticCodes.GeneratedDivisionByZero);
         }
     }
 

@@ -7,4 +7,7 @@ namespace GMac.Dsl.Diagnostics;
 public readonly record struct SourceSpan(string FilePath, int Line, int Column, int Start, int Length)
 {
     public static SourceSpan None(string filePath) => new(filePath, 1, 1, 0, 0);
+
+    /// <summary>A position known only by line and column, such as a line of a C# file.</summary>
+    public static SourceSpan At(string filePath, int line, int column) => new(filePath, line, column, 0, 0);
 }

@@ -1,30 +1,31 @@
 using GMac.Core.Algebra;
 using GMac.Core.Symbolic;
 using GMac.Dsl.Compilation;
+using GMac.Dsl.Diagnostics;
 using GMac.Dsl.Semantics;
 
 namespace GMac.Dsl.Generation;
 
 public sealed partial class MacroCodeGenerator
 {
-    private VariableSymbol? FindParameter(MacroSymbol macro, string name, BindingSpec at, List<GenerationError> errors)
+    private VariableSymbol? FindParameter(MacroSymbol macro, string name, BindingSpec at, List<Diagnostic> errors)
     {
         var parameter = macro.Inputs.Concat(macro.Outputs).FirstOrDefault(p => p.Name == name);
         if (parameter is not null) return parameter;
         var hint = NameSuggester.Suggest(name, macro.Inputs.Concat(macro.Outputs).Select(p => p.Name)) is { } s ? $"; did you mean '{s}'?" : "";
-        errors.Add(new GenerationError("GMAC0302", $"macro '{macro.Name}' has no input or output named '{name}'{hint}", at.Line, at.Column));
+        errors.Add(Problem(DiagnosticCodes.UnknownParameter, $"macro '{macro.Name}' has no input or output named '{name}'{hint}", at.Line, at.Column));
         return null;
     }
 
     private void BindCoefficient(MacroSymbol macro, CoefficientBindingSpec c, AtomTable atoms,
         Dictionary<(VariableSymbol, int), Scalar> inputValues,
-        Dictionary<string, (VariableSymbol, int, int)> outputs, Dictionary<string, string> outputTargets, List<GenerationError> errors)
+        Dictionary<string, (VariableSymbol, int, int)> outputs, Dictionary<string, string> outputTargets, List<Diagnostic> errors)
     {
         if (FindParameter(macro, c.Parameter, c, errors) is not { } parameter) return;
         var frame = _frames[parameter.Class!.Frame];
         if (!frame.TryParseBlade(c.Blade, out var blade, out var sign))
         {
-            errors.Add(new GenerationError("GMAC0303", $"'{c.Blade}' is not a blade of frame '{frame.Name}' (basis vectors: {string.Join(", ", frame.BasisVectorNames)})", c.Line, c.Column));
+            errors.Add(Problem(DiagnosticCodes.UnknownBlade, $"'{c.Blade}' is not a blade of frame '{frame.Name}' (basis vectors: {string.Join(", ", frame.BasisVectorNames)})", c.Line, c.Column));
             return;
         }
         var key = $"{parameter.Name}.{frame.BladeName(blade)}";
@@ -32,29 +33,29 @@ public sealed partial class MacroCodeGenerator
         {
             if (!parameter.Class.VariableBlades.Contains(blade.Id))
             {
-                errors.Add(new GenerationError("GMAC0304", $"'{key}' is not a variable coefficient of class '{parameter.Class.QualifiedName}' of input '{parameter.Name}'", c.Line, c.Column));
+                errors.Add(Problem(DiagnosticCodes.NotACoefficient, $"'{key}' is not a variable coefficient of class '{parameter.Class.QualifiedName}' of input '{parameter.Name}'", c.Line, c.Column));
                 return;
             }
             if (ParseValue(c, atoms, errors) is not { } value) return;
             if (!inputValues.TryAdd((parameter, blade.Id), sign < 0 ? -value : value))
-                errors.Add(new GenerationError("GMAC0305", $"'{key}' is bound twice", c.Line, c.Column));
+                errors.Add(Problem(DiagnosticCodes.BoundTwice, $"'{key}' is bound twice", c.Line, c.Column));
             return;
         }
 
         if (!parameter.Class.AllBlades.Contains(blade.Id))
         {
-            errors.Add(new GenerationError("GMAC0304", $"'{key}' is not a coefficient of class '{parameter.Class.QualifiedName}' of output '{parameter.Name}'", c.Line, c.Column));
+            errors.Add(Problem(DiagnosticCodes.NotACoefficient, $"'{key}' is not a coefficient of class '{parameter.Class.QualifiedName}' of output '{parameter.Name}'", c.Line, c.Column));
             return;
         }
         var target = c.IsTemplate ? TemplateTarget(c.Value) : c.Value.Trim();
         if (string.IsNullOrWhiteSpace(target))
         {
-            errors.Add(new GenerationError("GMAC0311", $"output '{key}' must be bound to an assignable target such as \"<wx>\", not \"{c.Value}\"", c.Line, c.Column));
+            errors.Add(Problem(DiagnosticCodes.OutputNotATarget, $"output '{key}' must be bound to an assignable target such as \"<wx>\", not \"{c.Value}\"", c.Line, c.Column));
             return;
         }
         if (!outputs.TryAdd(key, (parameter, blade.Id, sign)))
         {
-            errors.Add(new GenerationError("GMAC0305", $"'{key}' is bound twice", c.Line, c.Column));
+            errors.Add(Problem(DiagnosticCodes.BoundTwice, $"'{key}' is bound twice", c.Line, c.Column));
             return;
         }
         outputTargets[key] = target;
@@ -68,7 +69,7 @@ public sealed partial class MacroCodeGenerator
     }
 
     /// <summary>An input value: a number, a bare target-language expression, or a scalar expression over &lt;…&gt; parts.</summary>
-    private static Scalar? ParseValue(CoefficientBindingSpec c, AtomTable atoms, List<GenerationError> errors)
+    private static Scalar? ParseValue(CoefficientBindingSpec c, AtomTable atoms, List<Diagnostic> errors)
     {
         var text = c.Value.Trim();
         if (!c.IsTemplate)
@@ -82,7 +83,7 @@ public sealed partial class MacroCodeGenerator
             var close = FindClosing(text, i);
             if (close < 0)
             {
-                errors.Add(new GenerationError("GMAC0308", $"unbalanced '<' in \"{c.Value}\"", c.Line, c.Column));
+                errors.Add(Problem(DiagnosticCodes.InvalidBindingValue, $"unbalanced '<' in \"{c.Value}\"", c.Line, c.Column));
                 return null;
             }
             expression.Append(atoms.For(text[(i + 1)..close]).ToString());
@@ -93,11 +94,11 @@ public sealed partial class MacroCodeGenerator
             var value = Scalar.Parse(expression.ToString());
             var stray = value.Variables.FirstOrDefault(v => !v.StartsWith(AtomPrefix, StringComparison.Ordinal));
             if (stray is null) return value;
-            errors.Add(new GenerationError("GMAC0308", $"\"{c.Value}\" names '{stray}', which is neither a number nor a <target-language expression>", c.Line, c.Column));
+            errors.Add(Problem(DiagnosticCodes.InvalidBindingValue, $"\"{c.Value}\" names '{stray}', which is neither a number nor a <target-language expression>", c.Line, c.Column));
         }
         catch (ScalarSyntaxException e)
         {
-            errors.Add(new GenerationError("GMAC0308", $"\"{c.Value}\" is not a valid scalar expression: {e.Message}", c.Line, c.Column));
+            errors.Add(Problem(DiagnosticCodes.InvalidBindingValue, $"\"{c.Value}\" is not a valid scalar expression: {e.Message}", c.Line, c.Column));
         }
         return null;
     }
@@ -117,19 +118,19 @@ public sealed partial class MacroCodeGenerator
     private Assumptions BindClass(MacroSymbol macro, ClassBindingSpec c, AtomTable atoms,
         Dictionary<(VariableSymbol, int), Scalar> inputValues,
         Dictionary<string, (VariableSymbol, int, int)> outputs, Dictionary<string, string> outputTargets,
-        Assumptions assumptions, List<GenerationError> errors)
+        Assumptions assumptions, List<Diagnostic> errors)
     {
         if (FindParameter(macro, c.Parameter, c, errors) is not { } parameter) return assumptions;
         var model = _project.Model;
         if (!model.ClassBindings.TryGetValue(c.ClassBinding, out var binding))
         {
             var hint = NameSuggester.Suggest(c.ClassBinding, model.ClassBindings.Keys) is { } s ? $"; did you mean '{s}'?" : "";
-            errors.Add(new GenerationError("GMAC0309", $"unknown class binding '{c.ClassBinding}'{hint}", c.Line, c.Column));
+            errors.Add(Problem(DiagnosticCodes.ClassBindingMismatch, $"unknown class binding '{c.ClassBinding}'{hint}", c.Line, c.Column));
             return assumptions;
         }
         if (binding.Frame != parameter.Class!.Frame)
         {
-            errors.Add(new GenerationError("GMAC0309", $"class binding '{binding.Name}' is on frame '{binding.Frame.Name}', but '{parameter.Name}' of macro '{macro.Name}' is on frame '{parameter.Class.Frame.Name}'", c.Line, c.Column));
+            errors.Add(Problem(DiagnosticCodes.ClassBindingMismatch, $"class binding '{binding.Name}' is on frame '{binding.Frame.Name}', but '{parameter.Name}' of macro '{macro.Name}' is on frame '{parameter.Class.Frame.Name}'", c.Line, c.Column));
             return assumptions;
         }
         var frame = _frames[binding.Frame];
@@ -144,7 +145,7 @@ public sealed partial class MacroCodeGenerator
                 if (!parameter.Class.VariableBlades.Contains(coefficient.Blade.Mask)) continue; // class constants stay
                 var value = _compiler.Evaluator.EvaluateScalar(coefficient.Value, observer);
                 if (!inputValues.TryAdd((parameter, coefficient.Blade.Mask), coefficient.Blade.Sign < 0 ? -value : value))
-                    errors.Add(new GenerationError("GMAC0305", $"'{parameter.Name}.{frame.BladeName(new BasisBlade(coefficient.Blade.Mask))}' is bound twice", c.Line, c.Column));
+                    errors.Add(Problem(DiagnosticCodes.BoundTwice, $"'{parameter.Name}.{frame.BladeName(new BasisBlade(coefficient.Blade.Mask))}' is bound twice", c.Line, c.Column));
             }
             foreach (var (member, min) in binding.Minimums)
                 if (atoms.Find(Member(member)) is { } v) assumptions = WithBound(assumptions, v, Member(member), min, true, c, errors);
@@ -158,13 +159,13 @@ public sealed partial class MacroCodeGenerator
             var key = $"{parameter.Name}.{frame.BladeName(new BasisBlade(coefficient.Blade.Mask))}";
             if (coefficient.Value is not BoundMemberReference member)
             {
-                errors.Add(new GenerationError("GMAC0311", $"class binding '{binding.Name}' cannot receive output '{parameter.Name}': its coefficient of {frame.BladeName(new BasisBlade(coefficient.Blade.Mask))} is an expression, not a member", c.Line, c.Column));
+                errors.Add(Problem(DiagnosticCodes.OutputNotATarget, $"class binding '{binding.Name}' cannot receive output '{parameter.Name}': its coefficient of {frame.BladeName(new BasisBlade(coefficient.Blade.Mask))} is an expression, not a member", c.Line, c.Column));
                 continue;
             }
             if (!parameter.Class.AllBlades.Contains(coefficient.Blade.Mask)) continue;
             if (!outputs.TryAdd(key, (parameter, coefficient.Blade.Mask, coefficient.Blade.Sign)))
             {
-                errors.Add(new GenerationError("GMAC0305", $"'{key}' is bound twice", c.Line, c.Column));
+                errors.Add(Problem(DiagnosticCodes.BoundTwice, $"'{key}' is bound twice", c.Line, c.Column));
                 continue;
             }
             outputTargets[key] = Member(member.Path);

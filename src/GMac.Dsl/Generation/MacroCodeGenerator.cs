@@ -32,9 +32,22 @@ public sealed partial class MacroCodeGenerator
         _cas = cas ?? new RuleBasedCas();
     }
 
-    public GenerationOutcome Generate(string macroName, IReadOnlyList<BindingSpec> bindings, int regionLine = 1)
+    /// <param name="regionLine">The line of the binding point's <c>#region</c>, where problems of the whole point are reported.</param>
+    /// <param name="filePath">The file holding the binding point: errors are reported there, at the lines of the bindings.</param>
+    public GenerationOutcome Generate(string macroName, IReadOnlyList<BindingSpec> bindings, int regionLine = 1, string filePath = "")
     {
-        var errors = new List<GenerationError>();
+        var outcome = Outcome(macroName, bindings, regionLine);
+        if (outcome.Errors.Count == 0) return outcome;
+        return outcome with { Errors = outcome.Errors.Select(e => e with { Span = e.Span with { FilePath = filePath } }).ToList() };
+    }
+
+    /// <summary>A problem at a line and column of the binding point's file, which the public entry point fills in.</summary>
+    private static Diagnostic Problem(DiagnosticDescriptor descriptor, string message, int line, int column) =>
+        new(descriptor, SourceSpan.At("", line, column), message);
+
+    private GenerationOutcome Outcome(string macroName, IReadOnlyList<BindingSpec> bindings, int regionLine)
+    {
+        var errors = new List<Diagnostic>();
         var plan = Plan(macroName, bindings, regionLine, errors);
         if (plan is null || errors.Count > 0) return new GenerationOutcome(null, errors, null);
         try
@@ -43,44 +56,35 @@ public sealed partial class MacroCodeGenerator
         }
         catch (MacroEvaluationException e)
         {
-            errors.Add(new GenerationError(e.Code ?? "GMAC0310", $"macro '{macroName}' cannot be generated for these bindings: {e.Message}", regionLine, 1)
-            {
-                Source = e.Span,
-            });
+            errors.Add(Problem(e.Descriptor ?? DiagnosticCodes.CannotGenerate, $"macro '{macroName}' cannot be generated for these bindings: {e.Message}", regionLine, 1) with { Cause = e.Span });
             return new GenerationOutcome(null, errors, null);
         }
         catch (DivideByZeroException)
         {
             // A divisor that only vanishes once simplified under the bindings' assumptions.
-            errors.Add(new GenerationError(GenerationCodes.DivisionByZero,
-                $"macro '{macroName}' divides by an expression that simplifies to zero for these bindings", regionLine, 1)
-            {
-                Source = plan.Macro.Declaration,
-            });
+            errors.Add(Problem(DiagnosticCodes.GeneratedDivisionByZero,
+                $"macro '{macroName}' divides by an expression that simplifies to zero for these bindings", regionLine, 1) with { Cause = plan.Macro.Declaration });
             return new GenerationOutcome(null, errors, null);
         }
         catch (AlgebraException e) when (e.ExceedsLimit)
         {
-            errors.Add(new GenerationError(GenerationCodes.TooLarge, $"macro '{macroName}' cannot be generated: {e.Message}", regionLine, 1)
-            {
-                Source = plan.Macro.Declaration,
-            });
+            errors.Add(Problem(DiagnosticCodes.TooLarge, $"macro '{macroName}' cannot be generated: {e.Message}", regionLine, 1) with { Cause = plan.Macro.Declaration });
             return new GenerationOutcome(null, errors, null);
         }
         catch (Exception e) when (e is AlgebraException or InvalidOperationException)
         {
-            errors.Add(new GenerationError("GMAC0310", $"macro '{macroName}' cannot be generated for these bindings: {e.Message}", regionLine, 1));
+            errors.Add(Problem(DiagnosticCodes.CannotGenerate, $"macro '{macroName}' cannot be generated for these bindings: {e.Message}", regionLine, 1));
             return new GenerationOutcome(null, errors, null);
         }
     }
 
-    private BindingPointPlan? Plan(string macroName, IReadOnlyList<BindingSpec> bindings, int regionLine, List<GenerationError> errors)
+    private BindingPointPlan? Plan(string macroName, IReadOnlyList<BindingSpec> bindings, int regionLine, List<Diagnostic> errors)
     {
         var model = _project.Model;
         if (!model.Macros.TryGetValue(macroName, out var macro))
         {
             var hint = NameSuggester.Suggest(macroName, model.Macros.Keys) is { } s ? $"; did you mean '{s}'?" : "";
-            errors.Add(new GenerationError("GMAC0301", $"unknown macro '{macroName}'{hint}", regionLine, 1));
+            errors.Add(Problem(DiagnosticCodes.UnknownMacro, $"unknown macro '{macroName}'{hint}", regionLine, 1));
             return null;
         }
 
@@ -106,7 +110,7 @@ public sealed partial class MacroCodeGenerator
         {
             if (atoms.Find(a.Expression) is not { } variable)
             {
-                errors.Add(new GenerationError("GMAC0306", $"'{a.Expression}' in an assumption is not read by any binding of this binding point", a.Line, a.Column));
+                errors.Add(Problem(DiagnosticCodes.UnusedAssumption, $"'{a.Expression}' in an assumption is not read by any binding of this binding point", a.Line, a.Column));
                 continue;
             }
             assumptions = WithBound(assumptions, variable, a.Expression, a.Value, a.IsMinimum, a, errors);
@@ -114,7 +118,7 @@ public sealed partial class MacroCodeGenerator
         if (errors.Count > 0) return null;
         if (outputs.Count == 0)
         {
-            errors.Add(new GenerationError("GMAC0307", $"the binding point binds no output of macro '{macroName}', so there is nothing to generate", regionLine, 1));
+            errors.Add(Problem(DiagnosticCodes.NoOutputBound, $"the binding point binds no output of macro '{macroName}', so there is nothing to generate", regionLine, 1));
             return null;
         }
 
@@ -155,14 +159,14 @@ public sealed partial class MacroCodeGenerator
     /// minimum and the maximum is reported at the binding line that caused it, and not added.
     /// </summary>
     private static Assumptions WithBound(Assumptions assumptions, string variable, string expression, Rational value, bool isMinimum,
-        BindingSpec at, List<GenerationError> errors)
+        BindingSpec at, List<Diagnostic> errors)
     {
         var min = assumptions.MinimumOf(variable);
         var max = assumptions.MaximumOf(variable);
         if (isMinimum ? max is { } hi && value > hi : min is { } lo && value < lo)
         {
             var (lower, upper) = isMinimum ? (value, max!.Value) : (min!.Value, value);
-            errors.Add(new GenerationError(GenerationCodes.EmptyAssumption,
+            errors.Add(Problem(DiagnosticCodes.EmptyAssumption,
                 $"'{expression}' is assumed to be at least {lower} and at most {upper}: no value satisfies both", at.Line, at.Column));
             return assumptions;
         }

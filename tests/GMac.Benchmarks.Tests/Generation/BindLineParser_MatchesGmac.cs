@@ -54,6 +54,6 @@ public sealed class BindLineParser_MatchesGmac
         Assert.Equal("GMAC0404", diagnostic.Code);
 
         var e = Assert.Throws<FormatException>(() => BindLineParser.Parse(source, "Target"));
-        Assert.Contains($"line {diagnostic.Line}, column {diagnostic.Column}: {diagnostic.Message}", e.Message);
+        Assert.Contains($"line {diagnostic.Span.Line}, column {diagnostic.Span.Column}: {diagnostic.Message}", e.Message);
     }
 }

@@ -97,8 +97,8 @@ public sealed class Verify_InProjectContext : IDisposable
 
         var error = Assert.Single(failures).Diagnostic;
         Assert.Equal("GMAC0422", error.Code);
-        Assert.Equal(13, error.Line);
-        Assert.InRange(error.Column, 9, 30);
+        Assert.Equal(13, error.Span.Line);
+        Assert.InRange(error.Span.Column, 9, 30);
         Assert.Contains("NormalToVectors", error.Message);
     }
 

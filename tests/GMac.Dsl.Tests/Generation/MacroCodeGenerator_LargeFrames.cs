@@ -88,7 +88,7 @@ public sealed class MacroCodeGenerator_LargeFrames
         Assert.Equal("GMAC0314", error.Code);
         Assert.Contains("4096 terms", error.Message);
         Assert.Contains("12-dimensional", error.Message);
-        var at = Assert.IsType<Diagnostics.SourceSpan>(error.Source);
+        var at = Assert.IsType<Dsl.Diagnostics.SourceSpan>(error.Cause);
         Assert.Equal(("test.gmac", 17, 9), (at.FilePath, at.Line, at.Column));
     }
 }

@@ -41,7 +41,7 @@ public sealed class MacroCodeGenerator_UserErrors
             new AssumptionSpec("a", 3, true, 4, 5), new AssumptionSpec("a", 1, false, 5, 7),
         ]);
         var error = Assert.Single(outcome.Errors);
-        Assert.Equal(("GMAC0312", 5, 7), (error.Code, error.Line, error.Column));
+        Assert.Equal(("GMAC0312", 5, 7), (error.Code, error.Span.Line, error.Span.Column));
         Assert.Contains("'a'", error.Message);
     }
 
@@ -54,7 +54,15 @@ public sealed class MacroCodeGenerator_UserErrors
             new AssumptionSpec("obj.x", 1, false, 6, 9),
         ]);
         var error = Assert.Single(outcome.Errors);
-        Assert.Equal(("GMAC0312", 6, 9), (error.Code, error.Line, error.Column));
+        Assert.Equal(("GMAC0312", 6, 9), (error.Code, error.Span.Line, error.Span.Column));
+    }
+
+    [Fact]
+    public void Binding_errors_are_placed_in_the_file_of_the_binding_point()
+    {
+        var outcome = Generator().Generate("Norm2", [Bind("u", "e4", "<a>", 12), Bind("s", "1", "<r>", 13)], regionLine: 11, filePath: "src/K.cs");
+        var error = Assert.Single(outcome.Errors);
+        Assert.Equal("src/K.cs(12,3): error GMAC0303: 'e4' is not a blade of frame 'e3d' (basis vectors: e1, e2, e3)", error.ToString());
     }
 
     [Fact]
@@ -75,8 +83,8 @@ public sealed class MacroCodeGenerator_UserErrors
         var outcome = generator.Generate("DivZero", generator.DefaultBindings("DivZero"), regionLine: 9);
         var error = Assert.Single(outcome.Errors);
         Assert.Equal("GMAC0313", error.Code);
-        Assert.Equal(9, error.Line);
-        var at = Assert.IsType<Diagnostics.SourceSpan>(error.Source);
+        Assert.Equal(9, error.Span.Line);
+        var at = Assert.IsType<Dsl.Diagnostics.SourceSpan>(error.Cause);
         // The division "x / (x.<e1> - x.<e1>)" on line 16 of test.gmac, after "w = ".
         Assert.Equal(("test.gmac", 16, 13), (at.FilePath, at.Line, at.Column));
     }
@@ -97,8 +105,8 @@ public sealed class MacroCodeGenerator_UserErrors
         var generator = new MacroCodeGenerator(project);
         var outcome = generator.Generate("Bad", generator.DefaultBindings("Bad"), regionLine: 7);
         var error = Assert.Single(outcome.Errors);
-        Assert.Equal(7, error.Line);
-        var at = Assert.IsType<Diagnostics.SourceSpan>(error.Source);
+        Assert.Equal(7, error.Span.Line);
+        var at = Assert.IsType<Dsl.Diagnostics.SourceSpan>(error.Cause);
         Assert.Equal(("bad.gmac", 4), (at.FilePath, at.Line));
     }
 }
