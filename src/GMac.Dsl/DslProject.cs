@@ -1,8 +1,8 @@
 using System.Diagnostics;
 using GMac.Dsl.Diagnostics;
-using SafeFiles;
 using GMac.Dsl.Semantics;
 using GMac.Dsl.Syntax;
+using SafeFiles;
 
 namespace GMac.Dsl;
 

@@ -107,7 +107,7 @@ public sealed class AtomicFile_Writes : IDisposable
     }
 
     [Fact]
-    public void TryWrite_says_why_it_could_not_write_and_creates_nothing()
+    public void Try_write_says_why_it_could_not_write_and_creates_nothing()
     {
         var missingFolder = Path.Combine(_dir, "no", "such", "folder", "out.png");
         var why = AtomicFile.TryWrite(missingFolder, [1, 2, 3]);

@@ -17,7 +17,7 @@ public sealed class GeneratedOperationCounter(MacroCodeGenerator generator)
             var outcome = generator.Generate(kernel.MacroName, bindings);
             if (!outcome.Succeeded)
                 throw new InvalidOperationException($"{kernel.MacroName}: {string.Join("; ", outcome.Errors.Select(e => $"{e.Code}: {e.Message}"))}");
-            CodeStatistics s = outcome.Result!.Statistics;
+            var s = outcome.Result!.Statistics;
             adds += s.Additions;
             muls += s.Multiplications;
             divs += s.Divisions;

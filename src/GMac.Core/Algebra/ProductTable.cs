@@ -1,6 +1,6 @@
+using System.Collections.Concurrent;
 using System.Numerics;
 using System.Runtime.CompilerServices;
-using System.Collections.Concurrent;
 using GMac.Core.Numerics;
 
 namespace GMac.Core.Algebra;

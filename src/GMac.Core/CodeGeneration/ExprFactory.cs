@@ -77,7 +77,7 @@ public static class ExprFactory
     public static Expr Product(IEnumerable<Expr> factors)
     {
         var flat = new List<Expr>();
-        ConstantAccumulator constant = ConstantAccumulator.One;
+        var constant = ConstantAccumulator.One;
         var negative = false;
         foreach (var f in factors)
         {
@@ -98,7 +98,7 @@ public static class ExprFactory
             var quotient = Quotient(Product(flat), denominator);
             return negative ? Negate(quotient) : quotient;
         }
-        Expr result = flat.Count switch
+        var result = flat.Count switch
         {
             0 => ConstantExpr.One,
             1 => flat[0],

@@ -62,7 +62,7 @@ public abstract class AccelerationStructure : GeometricObject, IRayIntersector
             return false;
         }
 
-        GeometricObject nearest = Table.Get(primitive);
+        var nearest = Table.Get(primitive);
         if (nearest.CastsShadows && nearest.ShadowHit(ray, out tmin))
         {
             return true;

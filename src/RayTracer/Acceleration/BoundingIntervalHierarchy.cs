@@ -86,12 +86,12 @@ public sealed class BoundingIntervalHierarchy : AccelerationStructure
         Span<double> stackMin = stackalloc double[MaxDepth + 4];
         Span<double> stackMax = stackalloc double[MaxDepth + 4];
         int sp = 0, current = 0;
-        BihNode[] nodes = _nodes;
-        PrimitiveTable table = Table;
+        var nodes = _nodes;
+        var table = Table;
 
         while (true)
         {
-            ref BihNode node = ref nodes[current];
+            ref var node = ref nodes[current];
             if (node.Axis != BihNode.LeafAxis)
             {
                 int axis = node.Axis;
@@ -191,8 +191,8 @@ public sealed class BoundingIntervalHierarchy : AccelerationStructure
     private void Build(List<BihNode> nodes, int index, int[] order, int start, int end, BoundingBox candidate, int depth)
     {
         int count = end - start;
-        BoundingBox[] bounds = Table.Bounds;
-        Point3D[] centroids = Table.Centroids;
+        var bounds = Table.Bounds;
+        var centroids = Table.Centroids;
 
         // Halving the candidate box can be retried a bounded number of times before giving up.
         for (int attempt = 0; count > MaxLeafSize && depth < MaxDepth && attempt < 64; attempt++)

@@ -88,8 +88,8 @@ public sealed class Bvh : AccelerationStructure
         }
 
         var r = new WideRay(ray);
-        Bvh4Node[] nodes = _wide;
-        PrimitiveTable table = Table;
+        var nodes = _wide;
+        var table = Table;
         Span<int> stackRef = stackalloc int[StackSize];
         Span<double> stackEnter = stackalloc double[StackSize];
         int sp = 0;
@@ -98,8 +98,8 @@ public sealed class Bvh : AccelerationStructure
 
         while (true)
         {
-            ref Bvh4Node node = ref nodes[current];
-            int mask = r.Hits(ref node, t, out Vector256<double> enter);
+            ref var node = ref nodes[current];
+            int mask = r.Hits(ref node, t, out var enter);
 
             // A single interior child needs no trip through the stack.
             if (mask != 0 && (mask & (mask - 1)) == 0)
@@ -179,8 +179,8 @@ public sealed class Bvh : AccelerationStructure
         }
 
         var r = new WideRay(ray);
-        Bvh4Node[] nodes = _wide;
-        PrimitiveTable table = Table;
+        var nodes = _wide;
+        var table = Table;
         Span<int> stackRef = stackalloc int[StackSize];
         int sp = 0;
         stackRef[sp++] = 0;
@@ -203,7 +203,7 @@ public sealed class Bvh : AccelerationStructure
                 continue;
             }
 
-            ref Bvh4Node node = ref nodes[reference];
+            ref var node = ref nodes[reference];
             int mask = r.Hits(ref node, tMax, out _);
             while (mask != 0)
             {
@@ -224,7 +224,7 @@ public sealed class Bvh : AccelerationStructure
     {
         Span<int> slots = stackalloc int[4];
         int count = 0;
-        BvhNode root = _nodes[binary];
+        var root = _nodes[binary];
         if (root.Count > 0)
         {
             slots[count++] = binary;
@@ -239,7 +239,7 @@ public sealed class Bvh : AccelerationStructure
                 double bestArea = -1;
                 for (int i = 0; i < count; i++)
                 {
-                    BvhNode c = _nodes[slots[i]];
+                    var c = _nodes[slots[i]];
                     if (c.Count == 0 && c.Bounds.SurfaceArea > bestArea)
                     {
                         bestArea = c.Bounds.SurfaceArea;
@@ -272,7 +272,7 @@ public sealed class Bvh : AccelerationStructure
                 continue;
             }
 
-            BvhNode c = _nodes[slots[i]];
+            var c = _nodes[slots[i]];
             minX[i] = c.Bounds.Min.x;
             minY[i] = c.Bounds.Min.y;
             minZ[i] = c.Bounds.Min.z;
@@ -311,8 +311,8 @@ public sealed class Bvh : AccelerationStructure
     /// <summary>Builds the subtree over order[start..end) and returns its node index.</summary>
     private int Build(List<BvhNode> nodes, int[] order, int start, int end, int depth)
     {
-        BoundingBox[] bounds = Table.Bounds;
-        Point3D[] centroids = Table.Centroids;
+        var bounds = Table.Bounds;
+        var centroids = Table.Centroids;
         BoundingBox box = BoundingBox.Empty, centroidBox = BoundingBox.Empty;
         for (int i = start; i < end; i++)
         {
@@ -324,7 +324,7 @@ public sealed class Bvh : AccelerationStructure
         nodes.Add(new BvhNode { Bounds = box });
         int count = end - start;
         int longest = centroidBox.LongestAxis;
-        Vector3D extent = centroidBox.Diagonal;
+        var extent = centroidBox.Diagonal;
 
         if (count <= 1 || depth >= MaxDepth || !(extent[longest] > 0))
         {
@@ -382,8 +382,8 @@ public sealed class Bvh : AccelerationStructure
     /// <summary>Bins centroids along one axis and returns the cheapest SAH cost (area-weighted counts) and its bin boundary.</summary>
     private double EvaluateSah(int[] order, int start, int end, int axis, double lo, double hi, out int bestSplit)
     {
-        BoundingBox[] bounds = Table.Bounds;
-        Point3D[] centroids = Table.Centroids;
+        var bounds = Table.Bounds;
+        var centroids = Table.Centroids;
         Span<int> binCounts = stackalloc int[BinCount];
         Span<BoundingBox> binBounds = stackalloc BoundingBox[BinCount];
         binCounts.Clear();
@@ -400,7 +400,7 @@ public sealed class Bvh : AccelerationStructure
         // Sweep from the right to get the area and count of every right-hand side.
         Span<double> rightArea = stackalloc double[BinCount];
         Span<int> rightCount = stackalloc int[BinCount];
-        BoundingBox acc = BoundingBox.Empty;
+        var acc = BoundingBox.Empty;
         int accCount = 0;
         for (int b = BinCount - 1; b > 0; b--)
         {
@@ -437,7 +437,7 @@ public sealed class Bvh : AccelerationStructure
     /// <summary>Moves primitives whose centroid bins below <paramref name="split"/> to the front; returns the boundary.</summary>
     private int Partition(int[] order, int start, int end, int axis, double lo, double hi, int split)
     {
-        Point3D[] centroids = Table.Centroids;
+        var centroids = Table.Centroids;
         double scale = BinCount * (1 - 1e-9) / (hi - lo);
         int left = start, right = end - 1;
         while (left <= right)
@@ -483,10 +483,10 @@ public sealed class Bvh : AccelerationStructure
             Vector256<double> az = (node.MinZ - _oz) * _iz, bz = (node.MaxZ - _oz) * _iz;
             // The native forms map to single instructions; they differ from Min/Max only for NaN
             // and signed zeros, and the finite reciprocals above never produce NaN.
-            Vector256<double> t0 = Vector256.MaxNative(
+            var t0 = Vector256.MaxNative(
                 Vector256.MaxNative(Vector256.MinNative(ax, bx), Vector256.MinNative(ay, by)),
                 Vector256.MaxNative(Vector256.MinNative(az, bz), Vector256<double>.Zero));
-            Vector256<double> t1 = Vector256.MinNative(
+            var t1 = Vector256.MinNative(
                 Vector256.MinNative(Vector256.MaxNative(ax, bx), Vector256.MaxNative(ay, by)),
                 Vector256.MinNative(Vector256.MaxNative(az, bz), Vector256.Create(tMax)));
             enter = t0;

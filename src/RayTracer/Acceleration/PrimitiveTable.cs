@@ -25,9 +25,9 @@ internal sealed class PrimitiveTable
         var bounded = new List<GeometricObject>(objects.Count);
         var bounds = new List<BoundingBox>(objects.Count);
         var unbounded = new List<GeometricObject>();
-        foreach (GeometricObject o in objects)
+        foreach (var o in objects)
         {
-            BoundingBox box = o.GetBoundingBox();
+            var box = o.GetBoundingBox();
             if (box.IsEmpty)
             {
                 continue; // nothing to hit
@@ -59,7 +59,7 @@ internal sealed class PrimitiveTable
             _castsShadows[i] = Objects[i].CastsShadows;
             if (Objects[i] is ITriangle tri)
             {
-                Point3D v0 = tri.V0;
+                var v0 = tri.V0;
                 _triangles[i] = new PackedTriangle { V0 = v0, E1 = tri.V1 - v0, E2 = tri.V2 - v0 };
                 _isTriangle[i] = true;
             }
@@ -106,7 +106,7 @@ internal sealed class PrimitiveTable
     {
         if (_isTriangle[i])
         {
-            ref PackedTriangle tri = ref _triangles[i];
+            ref var tri = ref _triangles[i];
             return TriangleSolver.Distance(ray, tri.V0, tri.E1, tri.E2, tMax);
         }
 
@@ -123,7 +123,7 @@ internal sealed class PrimitiveTable
                 return false;
             }
 
-            ref PackedTriangle tri = ref _triangles[i];
+            ref var tri = ref _triangles[i];
             return TriangleSolver.Intersect(ray, tri.V0, tri.E1, tri.E2, tMax, out _, out _, out _);
         }
 
@@ -149,7 +149,7 @@ internal sealed class PrimitiveTable
 
     public bool OccludedByUnbounded(in Ray ray, double tMax)
     {
-        foreach (GeometricObject o in Unbounded)
+        foreach (var o in Unbounded)
         {
             if (o.ShadowHit(ray, out double t) && t < tMax)
             {

@@ -36,7 +36,7 @@ public sealed class RegularGrid : AccelerationStructure
         }
 
         // Pad so that flat scenes (all objects in one plane) still get a box with volume.
-        Vector3D size = Table.SceneBounds.Diagonal;
+        var size = Table.SceneBounds.Diagonal;
         double pad = 1e-6 * Math.Max(1e-6, Math.Max(size.x, Math.Max(size.y, size.z)));
         _box = Table.SceneBounds.Expanded(pad);
         size = _box.Diagonal;
@@ -59,7 +59,7 @@ public sealed class RegularGrid : AccelerationStructure
             var cursor = pass == 1 ? (int[])_cellStart.Clone() : counts;
             for (int i = 0; i < n; i++)
             {
-                BoundingBox b = Table.Bounds[i];
+                var b = Table.Bounds[i];
                 int x0 = CellX(b.Min.x), x1 = CellX(b.Max.x);
                 int y0 = CellY(b.Min.y), y1 = CellY(b.Max.y);
                 int z0 = CellZ(b.Min.z), z1 = CellZ(b.Max.z);
@@ -136,12 +136,12 @@ public sealed class RegularGrid : AccelerationStructure
             return false;
         }
 
-        Point3D start = ray.At(tEnter);
+        var start = ray.At(tEnter);
         int ix = CellX(start.x), iy = CellY(start.y), iz = CellZ(start.z);
         Axis(ray.o.x, ray.d.x, inv.x, _box.Min.x, _box.Max.x, _nx, ix, out double nextX, out double dtx, out int stepX, out int stopX);
         Axis(ray.o.y, ray.d.y, inv.y, _box.Min.y, _box.Max.y, _ny, iy, out double nextY, out double dty, out int stepY, out int stopY);
         Axis(ray.o.z, ray.d.z, inv.z, _box.Min.z, _box.Max.z, _nz, iz, out double nextZ, out double dtz, out int stepZ, out int stopZ);
-        PrimitiveTable table = Table;
+        var table = Table;
 
         while (true)
         {

@@ -22,10 +22,10 @@ public static class ThroughputReport
         ArgumentOutOfRangeException.ThrowIfLessThan(width, 1);
         ArgumentOutOfRangeException.ThrowIfLessThan(height, 1);
         ArgumentOutOfRangeException.ThrowIfLessThan(threads, 1);
-        CultureInfo culture = CultureInfo.InvariantCulture;
+        var culture = CultureInfo.InvariantCulture;
 
         var clock = Stopwatch.StartNew();
-        Mesh mesh = DisplacedSphere(triangles);
+        var mesh = DisplacedSphere(triangles);
         GeometricObject[] primitives = mesh.CreateTriangles(smooth: false);
         output.WriteLine(string.Create(culture,
             $"mesh: displaced sphere, {mesh.TriangleCount:N0} triangles, {mesh.Vertices.Length:N0} vertices ({clock.Elapsed.TotalSeconds:F2} s)"));
@@ -43,7 +43,7 @@ public static class ThroughputReport
         {
             GC.Collect();
             clock.Restart();
-            AccelerationStructure structure = build(primitives);
+            var structure = build(primitives);
             double buildSeconds = clock.Elapsed.TotalSeconds;
 
             // A small warm-up pass lets the JIT settle before timing; then the best of three passes
@@ -54,7 +54,7 @@ public static class ThroughputReport
             long hits = 0;
             for (int pass = 0; pass < TimedPasses; pass++)
             {
-                TimeSpan cpuBefore = Process.GetCurrentProcess().TotalProcessorTime;
+                var cpuBefore = Process.GetCurrentProcess().TotalProcessorTime;
                 clock.Restart();
                 hits = CastPrimaryRays(structure, width, height, threads);
                 bestWall = Math.Min(bestWall, clock.Elapsed.TotalSeconds);

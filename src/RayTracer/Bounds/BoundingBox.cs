@@ -51,7 +51,7 @@ public struct BoundingBox
                 return 0;
             }
 
-            Vector3D d = Max - Min;
+            var d = Max - Min;
             return 2.0 * (d.x * d.y + d.y * d.z + d.z * d.x);
         }
     }
@@ -61,7 +61,7 @@ public struct BoundingBox
     {
         get
         {
-            Vector3D d = Max - Min;
+            var d = Max - Min;
             return d.x >= d.y && d.x >= d.z ? 0 : d.y >= d.z ? 1 : 2;
         }
     }

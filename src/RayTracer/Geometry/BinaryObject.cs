@@ -38,7 +38,7 @@ public sealed class BinaryObject : GeometricObject
     {
         // The search runs on a scratch record, so a miss leaves the caller's record untouched;
         // the accepted crossing is then shaded once more into the caller's record.
-        if (!Solve(ray, out tmin, out Ray accepted))
+        if (!Solve(ray, out tmin, out var accepted))
         {
             return false;
         }
@@ -53,9 +53,9 @@ public sealed class BinaryObject : GeometricObject
     /// <summary>First crossing whose point passes the mask; <paramref name="accepted"/> is the query ray that found it.</summary>
     private bool Solve(in Ray ray, out double tmin, out Ray accepted)
     {
-        ShadingRecord sr = _scratch ??= new ShadingRecord(null);
+        var sr = _scratch ??= new ShadingRecord(null);
         double offset = 0;
-        Ray current = ray;
+        var current = ray;
         for (int i = 0; i < MaxSurfaceCrossings; i++)
         {
             if (!BaseObject.Hit(current, out double t, sr))

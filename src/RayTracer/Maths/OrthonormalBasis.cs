@@ -17,7 +17,7 @@ public readonly struct OrthonormalBasis
     /// <summary>Frame whose w is the normalized <paramref name="direction"/>; u and v are arbitrary but continuous (Duff et al. 2017).</summary>
     public static OrthonormalBasis FromW(Vector3D direction)
     {
-        Vector3D w = direction.Normalized();
+        var w = direction.Normalized();
         double sign = Math.CopySign(1.0, w.z);
         double a = -1.0 / (sign + w.z);
         double b = w.x * w.y * a;

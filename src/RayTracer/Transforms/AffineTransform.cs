@@ -107,7 +107,7 @@ public sealed class AffineTransform
             throw new ArgumentException("The rotation axis must not be the zero vector.", nameof(axis));
         }
 
-        Vector3D a = axis.Normalized();
+        var a = axis.Normalized();
         double c = Math.Cos(radians), s = Math.Sin(radians), k = 1 - c;
         double[] m = IdentityArray();
         m[0] = c + a.x * a.x * k;
@@ -184,7 +184,7 @@ public sealed class AffineTransform
             return box.IsEmpty ? box : BoundingBox.Infinite;
         }
 
-        BoundingBox result = BoundingBox.Empty;
+        var result = BoundingBox.Empty;
         for (int i = 0; i < 8; i++)
         {
             var corner = new Point3D(

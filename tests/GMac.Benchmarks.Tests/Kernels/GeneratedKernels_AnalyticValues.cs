@@ -24,7 +24,7 @@ public class GeneratedKernels_AnalyticValues
     }
 
     [Fact]
-    public void VortexS_of_p_perpendicular_to_a_is_gamma_times_the_third_axis()
+    public void Vortex_s_of_p_perpendicular_to_a_is_gamma_times_the_third_axis()
     {
         var x = new VortexInput { P = new(0, 1, 0), A = new(1, 0, 0), Omega = 5, Gamma = 3 };
         VortexSKernel.Generated(in x, out var v);
@@ -52,7 +52,7 @@ public class GeneratedKernels_AnalyticValues
     }
 
     [Fact]
-    public void Both_Gram_Schmidt_forms_give_mutually_orthogonal_vectors_spanning_the_same_flags()
+    public void Both_gram_schmidt_forms_give_mutually_orthogonal_vectors_spanning_the_same_flags()
     {
         var v = new Vec3Triple { A = new(2, 0.3, -0.4), B = new(0.5, 1.7, 0.2), C = new(-0.3, 0.6, 1.9) };
         GramSchmidtContractionKernel.Generated(in v, out var c);
@@ -113,7 +113,7 @@ public class GeneratedKernels_AnalyticValues
     }
 
     [Fact]
-    public void Rotor_interpolation_approaches_R1_reaches_R2_and_bisects_at_one_half()
+    public void Rotor_interpolation_approaches_r1_reaches_r2_and_bisects_at_one_half()
     {
         var r1 = new Rotor3(0.9, 0.3, -0.1, 0.2);
         var r2 = new Rotor3(0.5, -0.2, 0.6, 0.3);

@@ -62,7 +62,7 @@ public sealed class Generate_Faults : IDisposable
     }
 
     [Fact]
-    public void Nested_GMac_regions()
+    public void Nested_gmac_regions()
     {
         var (exit, err) = GenerateExpectingUntouched(FileWith("""
                     #region GMac : NormalToVectors

@@ -6,7 +6,7 @@ namespace GMac.Core.Tests.Algebra;
 public class Algebra_BadInput
 {
     [Fact]
-    public void NonSymmetricMatrix_NamesFrameAndEntries()
+    public void Non_symmetric_matrix_names_frame_and_entries()
     {
         var ex = Assert.Throws<AlgebraException>(() => Metric.FromMatrix(new Rational[,] { { 1, 2 }, { 3, 1 } }, "bent"));
         Assert.Contains("'bent'", ex.Message);
@@ -15,14 +15,14 @@ public class Algebra_BadInput
     }
 
     [Fact]
-    public void NonSquareMatrix_IsRejected()
+    public void Non_square_matrix_is_rejected()
     {
         var ex = Assert.Throws<AlgebraException>(() => Metric.FromMatrix(new Rational[,] { { 1, 0, 0 }, { 0, 1, 0 } }, "flat"));
         Assert.Contains("2x3", ex.Message);
     }
 
     [Fact]
-    public void TooManyBasisVectors_AreRejected()
+    public void Too_many_basis_vectors_are_rejected()
     {
         var ex = Assert.Throws<AlgebraException>(() => Frame.Euclidean("huge", Frame.MaxDimension + 1));
         Assert.Contains("'huge'", ex.Message);
@@ -30,14 +30,14 @@ public class Algebra_BadInput
     }
 
     [Fact]
-    public void WrongNumberOfNames_AndDuplicateNames_AreRejected()
+    public void Wrong_number_of_names_and_duplicate_names_are_rejected()
     {
         Assert.Contains("3 basis vector names", Assert.Throws<AlgebraException>(() => new Frame("f", ["a", "b", "c"], Metric.Euclidean(2))).Message);
         Assert.Contains("'a' is used twice", Assert.Throws<AlgebraException>(() => new Frame("f", ["a", "a"], Metric.Euclidean(2))).Message);
     }
 
     [Fact]
-    public void InverseOfNullVersor_Throws()
+    public void Inverse_of_null_versor_throws()
     {
         var cga = TestFrames.Conformal;
         var ni = Multivector<double>.Basis(cga, "ni");
@@ -47,7 +47,7 @@ public class Algebra_BadInput
     }
 
     [Fact]
-    public void MixingFrames_Throws()
+    public void Mixing_frames_throws()
     {
         var a = Multivector<double>.Basis(TestFrames.E3, "e1");
         var b = Multivector<double>.Basis(TestFrames.E2, "e1");
@@ -58,14 +58,14 @@ public class Algebra_BadInput
     }
 
     [Fact]
-    public void DualInDegenerateFrame_Throws()
+    public void Dual_in_degenerate_frame_throws()
     {
         var e1 = Multivector<double>.Basis(TestFrames.Projective, "e1");
         Assert.Contains("'pga'", Assert.Throws<AlgebraException>(() => e1.Dual()).Message);
     }
 
     [Fact]
-    public void UnknownBlade_NamesTheFrameBasis()
+    public void Unknown_blade_names_the_frame_basis()
     {
         var ex = Assert.Throws<AlgebraException>(() => Multivector<double>.Basis(TestFrames.E3, "e1^x"));
         Assert.Contains("e1, e2, e3", ex.Message);

@@ -26,7 +26,7 @@ public class ConformalModel_Objects
     private static double[] RandomPoint(Random r) => [r.NextDouble() * 4 - 2, r.NextDouble() * 4 - 2, r.NextDouble() * 4 - 2];
 
     [Fact]
-    public void NormalizedPoint_IsNull_AndMeetsInfinityAtMinusOne()
+    public void Normalized_point_is_null_and_meets_infinity_at_minus_one()
     {
         var r = new Random(20);
         for (var i = 0; i < 20; i++)
@@ -39,7 +39,7 @@ public class ConformalModel_Objects
     }
 
     [Fact]
-    public void ContractionOfPoints_GivesSquaredDistance()
+    public void Contraction_of_points_gives_squared_distance()
     {
         var r = new Random(21);
         for (var i = 0; i < 20; i++)
@@ -51,7 +51,7 @@ public class ConformalModel_Objects
     }
 
     [Fact]
-    public void SphereThroughFourPoints_HasTheRightCentreAndRadius()
+    public void Sphere_through_four_points_has_the_right_centre_and_radius()
     {
         var r = new Random(22);
         for (var i = 0; i < 20; i++)
@@ -76,7 +76,7 @@ public class ConformalModel_Objects
     }
 
     [Fact]
-    public void PlaneThroughThreePoints_HasTheRightNormalAndDistance()
+    public void Plane_through_three_points_has_the_right_normal_and_distance()
     {
         var r = new Random(23);
         for (var i = 0; i < 20; i++)
@@ -98,7 +98,7 @@ public class ConformalModel_Objects
     }
 
     [Fact]
-    public void Translator_MovesPoints()
+    public void Translator_moves_points()
     {
         var t = Euclid(0.5, -1.5, 2);
         var vt = Multivector<double>.FromScalar(C, 1) - t.Op(Ni) * 0.5; // (3.93)
@@ -136,7 +136,7 @@ public class ConformalModel_Objects
     }
 
     [Fact]
-    public void Rotor_RotatesAboutItsAxisThroughTheOrigin()
+    public void Rotor_rotates_about_its_axis_through_the_origin()
     {
         var r = new Random(24);
         for (var i = 0; i < 10; i++)
@@ -147,7 +147,7 @@ public class ConformalModel_Objects
     }
 
     [Fact]
-    public void GeneralRotation_And_Twist_MoveAboutAnAxisThroughAPoint()
+    public void General_rotation_and_twist_move_about_an_axis_through_a_point()
     {
         var r = new Random(25);
         for (var i = 0; i < 10; i++)
@@ -167,7 +167,7 @@ public class ConformalModel_Objects
     }
 
     [Fact]
-    public void Reflections_And_Scaling_ActAsStated()
+    public void Reflections_and_scaling_act_as_stated()
     {
         var p = new[] { 0.3, -1.2, 2.5 };
         var pt = Point(p[0], p[1], p[2]);
@@ -190,7 +190,7 @@ public class ConformalModel_Objects
     }
 
     [Fact]
-    public void DirectionVectors_AreTranslationInvariant()
+    public void Direction_vectors_are_translation_invariant()
     {
         var v = Euclid(1, -2, 0.5).Op(Ni); // (3.87)
         var moved = Translator([3, 1, -4]).Apply(v);

@@ -6,7 +6,7 @@ public class Products_Identities
 {
     [Theory]
     [MemberData(nameof(TestFrames.All), MemberType = typeof(TestFrames))]
-    public void GeometricProduct_IsAssociative(string frameName)
+    public void Geometric_product_is_associative(string frameName)
     {
         var frame = TestFrames.ByName(frameName);
         var r = new RandomMultivectors(1);
@@ -19,7 +19,7 @@ public class Products_Identities
 
     [Theory]
     [MemberData(nameof(TestFrames.All), MemberType = typeof(TestFrames))]
-    public void VectorProduct_IsContractionPlusOuter(string frameName)
+    public void Vector_product_is_contraction_plus_outer(string frameName)
     {
         var frame = TestFrames.ByName(frameName);
         var r = new RandomMultivectors(2);
@@ -42,7 +42,7 @@ public class Products_Identities
     /// </summary>
     [Theory]
     [MemberData(nameof(TestFrames.All), MemberType = typeof(TestFrames))]
-    public void EveryProduct_IsItsGradeSelectionOfTheGeometricProduct(string frameName)
+    public void Every_product_is_its_grade_selection_of_the_geometric_product(string frameName)
     {
         var frame = TestFrames.ByName(frameName);
         var r = new RandomMultivectors(3);
@@ -87,7 +87,7 @@ public class Products_Identities
 
     [Theory]
     [MemberData(nameof(TestFrames.All), MemberType = typeof(TestFrames))]
-    public void ReverseOfProduct_IsProductOfReversesSwapped(string frameName)
+    public void Reverse_of_product_is_product_of_reverses_swapped(string frameName)
     {
         var frame = TestFrames.ByName(frameName);
         var r = new RandomMultivectors(4);
@@ -103,7 +103,7 @@ public class Products_Identities
 
     [Theory]
     [MemberData(nameof(TestFrames.All), MemberType = typeof(TestFrames))]
-    public void OuterProduct_OfVectorsIsAntisymmetric_AndMetricFree(string frameName)
+    public void Outer_product_of_vectors_is_antisymmetric_and_metric_free(string frameName)
     {
         var frame = TestFrames.ByName(frameName);
         var r = new RandomMultivectors(5);
@@ -118,7 +118,7 @@ public class Products_Identities
     }
 
     [Fact]
-    public void WorkedExample_3_3_1_MatchesTheThesis()
+    public void Worked_example_3_3_1_matches_the_thesis()
     {
         var f = Frame.Euclidean("e4d", 4);
         Multivector<double> M(string blade) => Multivector<double>.Basis(f, blade);
@@ -133,7 +133,7 @@ public class Products_Identities
     }
 
     [Fact]
-    public void BladeNames_CarryTheSignOfTheirOrder()
+    public void Blade_names_carry_the_sign_of_their_order()
     {
         var f = TestFrames.E3;
         Assert.Equal(-1.0, Multivector<double>.Basis(f, "e2^e1")["e1^e2"]);
@@ -145,7 +145,7 @@ public class Products_Identities
     }
 
     [Fact]
-    public void DegenerateFrame_NullVectorSquaresToZero()
+    public void Degenerate_frame_null_vector_squares_to_zero()
     {
         var f = TestFrames.Projective;
         var e4 = Multivector<double>.Basis(f, "e4");
@@ -155,7 +155,7 @@ public class Products_Identities
     }
 
     [Fact]
-    public void ManyBasisVectors_AreSupported()
+    public void Many_basis_vectors_are_supported()
     {
         var f = Frame.FromSignature("big", 10, 2);
         var r = new RandomMultivectors(6);

@@ -28,7 +28,7 @@ public class SymbolicAlgebra_AgreesWithNumeric
 
     [Theory]
     [MemberData(nameof(TestFrames.All), MemberType = typeof(TestFrames))]
-    public void EveryOperation_SymbolicThenNumeric_EqualsNumeric(string frameName)
+    public void Every_operation_symbolic_then_numeric_equals_numeric(string frameName)
     {
         var frame = TestFrames.ByName(frameName);
         var r = new RandomMultivectors(30);
@@ -61,7 +61,7 @@ public class SymbolicAlgebra_AgreesWithNumeric
     }
 
     [Fact]
-    public void ThesisExample_4_2_GivesTheOptimizedFormulas()
+    public void Thesis_example_4_2_gives_the_optimized_formulas()
     {
         var f = TestFrames.E3;
         var x = Scalar.Variable("x");
@@ -78,7 +78,7 @@ public class SymbolicAlgebra_AgreesWithNumeric
     }
 
     [Fact]
-    public void NormalToTwoVectors_IsTheCrossProduct_WithSixMultiplicationsAndThreeAdditions()
+    public void Normal_to_two_vectors_is_the_cross_product_with_six_multiplications_and_three_additions()
     {
         var f = TestFrames.E3;
         var u = SymbolicMultivector.VectorVariables(f, "u");
@@ -104,7 +104,7 @@ public class SymbolicAlgebra_AgreesWithNumeric
     }
 
     [Fact]
-    public void CoefficientDerivative_MatchesFiniteDifferences()
+    public void Coefficient_derivative_matches_finite_differences()
     {
         var f = TestFrames.Conformal;
         var t = Scalar.Variable("t");

@@ -7,7 +7,7 @@ public class Versors_InverseDualExp
 {
     [Theory]
     [MemberData(nameof(TestFrames.NonDegenerate), MemberType = typeof(TestFrames))]
-    public void VersorTimesInverse_IsOne(string frameName)
+    public void Versor_times_inverse_is_one(string frameName)
     {
         var frame = TestFrames.ByName(frameName);
         var r = new RandomMultivectors(10);
@@ -22,7 +22,7 @@ public class Versors_InverseDualExp
 
     [Theory]
     [MemberData(nameof(TestFrames.NonDegenerate), MemberType = typeof(TestFrames))]
-    public void BladeTimesInverse_IsOne(string frameName)
+    public void Blade_times_inverse_is_one(string frameName)
     {
         var frame = TestFrames.ByName(frameName);
         var r = new RandomMultivectors(11);
@@ -37,7 +37,7 @@ public class Versors_InverseDualExp
 
     [Theory]
     [MemberData(nameof(TestFrames.NonDegenerate), MemberType = typeof(TestFrames))]
-    public void DualThenUndual_IsIdentity(string frameName)
+    public void Dual_then_undual_is_identity(string frameName)
     {
         var frame = TestFrames.ByName(frameName);
         var r = new RandomMultivectors(12);
@@ -57,7 +57,7 @@ public class Versors_InverseDualExp
     }
 
     [Fact]
-    public void CrossProduct_IsTheDualOfTheOuterProduct()
+    public void Cross_product_is_the_dual_of_the_outer_product()
     {
         var f = TestFrames.E3;
         var r = new RandomMultivectors(13);
@@ -70,7 +70,7 @@ public class Versors_InverseDualExp
     }
 
     [Fact]
-    public void Exp_OfEuclideanBivector_IsTheTrigRotor_AndMatchesItsSeries()
+    public void Exp_of_euclidean_bivector_is_the_trig_rotor_and_matches_its_series()
     {
         var f = TestFrames.E3;
         var r = new RandomMultivectors(14);
@@ -85,7 +85,7 @@ public class Versors_InverseDualExp
     }
 
     [Fact]
-    public void Exp_OfBoostAndNullBivector_UsesHyperbolicAndLinearForms()
+    public void Exp_of_boost_and_null_bivector_uses_hyperbolic_and_linear_forms()
     {
         var f = TestFrames.Cl41;
         var boost = Multivector<double>.Basis(f, "e1^e5") * 0.8; // squares to +0.64
@@ -109,7 +109,7 @@ public class Versors_InverseDualExp
     }
 
     [Fact]
-    public void Norms_FollowTheirDefinitions()
+    public void Norms_follow_their_definitions()
     {
         var f = TestFrames.E3;
         var r = new RandomMultivectors(15);
@@ -126,7 +126,7 @@ public class Versors_InverseDualExp
     }
 
     [Fact]
-    public void Outermorphism_PreservesOuterProduct_AndScalesPseudoscalarByDeterminant()
+    public void Outermorphism_preserves_outer_product_and_scales_pseudoscalar_by_determinant()
     {
         var f = TestFrames.E3;
         var r = new RandomMultivectors(16);

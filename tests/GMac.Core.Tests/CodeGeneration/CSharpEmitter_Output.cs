@@ -9,7 +9,7 @@ public class CSharpEmitter_Output
         new(statements, inputs, statements.OfType<AssignmentStatement>().Where(s => s.IsOutput).ToDictionary(s => s.Target, s => s.Target + "Target", StringComparer.Ordinal));
 
     [Fact]
-    public void Temporaries_AvoidNamesInScope_AndAreDeclaredOnce()
+    public void Temporaries_avoid_names_in_scope_and_are_declared_once()
     {
         var inputs = new Dictionary<string, string> { ["a"] = "a", ["b"] = "b" };
         var block = Block(inputs,
@@ -20,7 +20,7 @@ public class CSharpEmitter_Output
     }
 
     [Fact]
-    public void ComplexInputExpressions_AreParenthesized_AndMathCallsUseSystemMath()
+    public void Complex_input_expressions_are_parenthesized_and_math_calls_use_system_math()
     {
         var inputs = new Dictionary<string, string> { ["a"] = "p.x + 1", ["b"] = "v[i].y", ["c"] = "angle" };
         var block = Block(inputs,
@@ -29,7 +29,7 @@ public class CSharpEmitter_Output
     }
 
     [Fact]
-    public void Header_ReportsTheStatistics_AndVerbatimTextKeepsItsPlaceholders()
+    public void Header_reports_the_statistics_and_verbatim_text_keeps_its_placeholders()
     {
         var inputs = new Dictionary<string, string> { ["a"] = "a" };
         var block = Block(inputs,
@@ -40,7 +40,7 @@ public class CSharpEmitter_Output
     }
 
     [Fact]
-    public void Literals_AreAlwaysDoubles()
+    public void Literals_are_always_doubles()
     {
         Assert.Equal("2.0", ExprPrinter.Literal(2));
         Assert.Equal("0.5", ExprPrinter.Literal(0.5));
@@ -48,7 +48,7 @@ public class CSharpEmitter_Output
     }
 
     [Fact]
-    public void Parentheses_FollowTheTree()
+    public void Parentheses_follow_the_tree()
     {
         var (a, b, c) = (Variable("a"), Variable("b"), Variable("c"));
         Assert.Equal("a * (b - c)", Product(a, Difference(b, c)).ToString());

@@ -10,7 +10,7 @@ public class CodeGenerator_Kernels
     private static readonly string[] E3Vector = ["e1", "e2", "e3"];
 
     [Fact]
-    public void NormalToTwoVectors_ThreeAssignments_SixProducts_ThreeSubtractions()
+    public void Normal_to_two_vectors_three_assignments_six_products_three_subtractions()
     {
         var request = new CodeGenerationRequest(
             r =>
@@ -35,7 +35,7 @@ public class CodeGenerator_Kernels
     }
 
     [Fact]
-    public void HiddenSurface_AtMostTwoProductsAndFiveSubtractions()
+    public void Hidden_surface_at_most_two_products_and_five_subtractions()
     {
         // thesis (4.14): the e1^e2 coefficient of (v3 − v1) ∧ (v2 − v1)
         var request = new CodeGenerationRequest(
@@ -56,7 +56,7 @@ public class CodeGenerator_Kernels
     }
 
     [Fact]
-    public void SphereThroughFourPoints_AtMostOneHundredOperations()
+    public void Sphere_through_four_points_at_most_one_hundred_operations()
     {
         var request = new CodeGenerationRequest(
             r =>

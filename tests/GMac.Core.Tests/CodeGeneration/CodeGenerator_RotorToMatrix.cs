@@ -42,7 +42,7 @@ public class CodeGenerator_RotorToMatrix
     }
 
     [Fact]
-    public void NormalizedRotor_GivesTheReducedDiagonal_7_6()
+    public void Normalized_rotor_gives_the_reduced_diagonal_7_6()
     {
         var request = Request(normalized: true);
         var simplified = request.Evaluate(null).Statements.OfType<SymbolicOutput>()
@@ -74,7 +74,7 @@ public class CodeGenerator_RotorToMatrix
     }
 
     [Fact]
-    public void WithoutTheConstraint_TheDiagonalKeepsAllFourSquares()
+    public void Without_the_constraint_the_diagonal_keeps_all_four_squares()
     {
         var code = CSharpEmitter.Emit(CodeGenerator.Generate(Request(normalized: false)).Block);
         Assert.Contains("R.w * R.w", code);

@@ -49,7 +49,7 @@ public class CodeGenerator_Twist
     }
 
     [Fact]
-    public void FullTwist_NeedsFewerOperationsThanFigure66_AndMovesPointsCorrectly()
+    public void Full_twist_needs_fewer_operations_than_figure_66_and_moves_points_correctly()
     {
         var request = Request();
         var result = CodeGenerator.Generate(request);

@@ -8,7 +8,7 @@ namespace GMac.Core.Tests.CodeGeneration;
 public class OptimizerPasses_Behaviour
 {
     [Fact]
-    public void ConstantFolding_FoldsAndPropagates()
+    public void Constant_folding_folds_and_propagates()
     {
         var block = Block(
             Temp("t", Sum(Product(Constant(2), Constant(3)), Call("sqrt", Constant(4)))),
@@ -20,7 +20,7 @@ public class OptimizerPasses_Behaviour
     }
 
     [Fact]
-    public void CopyPropagation_ReadsTheCopiedVariable()
+    public void Copy_propagation_reads_the_copied_variable()
     {
         var block = Block(Temp("t", Negate(A)), Out("o", Product(Variable("t"), B)));
         var result = new CopyPropagationPass().Run(block);
@@ -30,7 +30,7 @@ public class OptimizerPasses_Behaviour
     }
 
     [Fact]
-    public void InlineSingleUse_SubstitutesWithoutExpanding()
+    public void Inline_single_use_substitutes_without_expanding()
     {
         var block = Block(Temp("t", Sum(A, B)), Out("o", Product(Variable("t"), C)));
         var result = new InlineSingleUsePass().Run(block);
@@ -41,14 +41,14 @@ public class OptimizerPasses_Behaviour
     }
 
     [Fact]
-    public void InlineSingleUse_KeepsSharedTemporaries()
+    public void Inline_single_use_keeps_shared_temporaries()
     {
         var block = Block(Temp("t", Sum(A, B)), Out("o1", Product(Variable("t"), C)), Out("o2", Product(Variable("t"), D)));
         Assert.Single(new InlineSingleUsePass().Run(block).Temporaries);
     }
 
     [Fact]
-    public void CommonSubexpressions_BecomeOneTemporary_IncludingNegatedDifferences()
+    public void Common_subexpressions_become_one_temporary_including_negated_differences()
     {
         var block = Block(
             Out("o1", Product(Difference(A, B), C)),
@@ -63,7 +63,7 @@ public class OptimizerPasses_Behaviour
     }
 
     [Fact]
-    public void DeadCode_RemovesUnreadTemporaries()
+    public void Dead_code_removes_unread_temporaries()
     {
         var block = Block(Temp("t", Sum(A, B)), Temp("u", Product(Variable("t"), C)), Out("o", D));
         var result = new DeadCodePass().Run(block);
@@ -72,7 +72,7 @@ public class OptimizerPasses_Behaviour
     }
 
     [Fact]
-    public void StrengthReduction_TurnsPowersIntoProducts_AndSharesReciprocals()
+    public void Strength_reduction_turns_powers_into_products_and_shares_reciprocals()
     {
         var s = Sum(A, B);
         var block = Block(
@@ -89,7 +89,7 @@ public class OptimizerPasses_Behaviour
     }
 
     [Fact]
-    public void TemporaryReuse_GivesNamesBack_AfterTheirLastRead()
+    public void Temporary_reuse_gives_names_back_after_their_last_read()
     {
         var block = Block(
             Temp("t1", Sum(A, B)),
@@ -104,7 +104,7 @@ public class OptimizerPasses_Behaviour
     }
 
     [Fact]
-    public void SumFactoring_TakesASharedFactorOutOfTheTerms()
+    public void Sum_factoring_takes_a_shared_factor_out_of_the_terms()
     {
         var block = Block(Out("o", Sum(Product(A, B), Product(A, C), Negate(Product(A, D)), B)));
         var result = new SumFactoringPass().Run(block);
@@ -113,7 +113,7 @@ public class OptimizerPasses_Behaviour
     }
 
     [Fact]
-    public void Optimizer_KeepsValues_OnRandomBlocks()
+    public void Optimizer_keeps_values_on_random_blocks()
     {
         var random = new Random(81);
         Expr Leaf() => random.Next(5) switch { 0 => A, 1 => B, 2 => C, 3 => D, _ => Constant(random.Next(1, 5)) };

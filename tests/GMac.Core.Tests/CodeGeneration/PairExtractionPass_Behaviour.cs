@@ -15,7 +15,7 @@ public class PairExtractionPass_Behaviour
         block.Statements.OfType<AssignmentStatement>().Where(s => !s.IsOutput).ToArray();
 
     [Fact]
-    public void AFactorPairInTwoProducts_BecomesOneTemporary()
+    public void A_factor_pair_in_two_products_becomes_one_temporary()
     {
         var block = Block(Out("o1", Product(A, B, C)), Out("o2", Product(A, B, D)));
         var result = new PairExtractionPass().Run(block);
@@ -27,7 +27,7 @@ public class PairExtractionPass_Behaviour
     }
 
     [Fact]
-    public void ATermPairInTwoSums_BecomesOneTemporary_EvenWhenOneSumHasItNegated()
+    public void A_term_pair_in_two_sums_becomes_one_temporary_even_when_one_sum_has_it_negated()
     {
         var block = Block(
             Out("o1", Sum(A, B, C)),
@@ -42,7 +42,7 @@ public class PairExtractionPass_Behaviour
     }
 
     [Fact]
-    public void ThePairSharedMostOften_GoesFirst()
+    public void The_pair_shared_most_often_goes_first()
     {
         // a·b occurs three times, c·d twice: both become temporaries, a·b as the first.
         var block = Block(
@@ -56,7 +56,7 @@ public class PairExtractionPass_Behaviour
     }
 
     [Fact]
-    public void ABlockWithoutARepeatedPair_IsLeftAsItIs()
+    public void A_block_without_a_repeated_pair_is_left_as_it_is()
     {
         var block = Block(Out("o1", Product(A, B)), Out("o2", Sum(C, D)), Out("o3", Product(A, C, D)));
         var result = new PairExtractionPass().Run(block);
@@ -65,7 +65,7 @@ public class PairExtractionPass_Behaviour
     }
 
     [Fact]
-    public void TemporaryNames_SkipNamesTheBlockAlreadyUses()
+    public void Temporary_names_skip_names_the_block_already_uses()
     {
         var names = new[] { "a", "o1", "fresh" };
         var block = Block(Out("o1", Product(A, B, C)), Out("o2", Product(A, B, D)));

@@ -47,7 +47,7 @@ public class RationalMatrix_Algebra
     }
 
     [Fact]
-    public void Determinant_EqualsTheLeibnizFormula()
+    public void Determinant_equals_the_leibniz_formula()
     {
         var random = new Random(7);
         for (var n = 1; n <= 5; n++)
@@ -59,7 +59,7 @@ public class RationalMatrix_Algebra
     }
 
     [Fact]
-    public void Inverse_TimesMatrix_IsTheIdentity_OnBothSides()
+    public void Inverse_times_matrix_is_the_identity_on_both_sides()
     {
         var random = new Random(11);
         for (var n = 1; n <= 6; n++)
@@ -74,7 +74,7 @@ public class RationalMatrix_Algebra
     }
 
     [Fact]
-    public void Determinant_IsMultiplicative_AndTransposeInvariant()
+    public void Determinant_is_multiplicative_and_transpose_invariant()
     {
         var random = new Random(13);
         for (var trial = 0; trial < 10; trial++)
@@ -87,7 +87,7 @@ public class RationalMatrix_Algebra
     }
 
     [Fact]
-    public void SingularMatrices_HaveNoInverse()
+    public void Singular_matrices_have_no_inverse()
     {
         var m = RationalMatrix.FromRows([[1, 2, 3], [2, 4, 6], [0, 1, 1]]);
         Assert.True(m.Determinant().IsZero);
@@ -96,7 +96,7 @@ public class RationalMatrix_Algebra
     }
 
     [Fact]
-    public void Pivoting_HandlesAZeroLeadingEntry()
+    public void Pivoting_handles_a_zero_leading_entry()
     {
         var m = RationalMatrix.FromRows([[0, 1], [1, 0]]);
         Assert.Equal(Rational.MinusOne, m.Determinant());
@@ -104,7 +104,7 @@ public class RationalMatrix_Algebra
     }
 
     [Fact]
-    public void Product_OfNonConformingShapes_AndNonSquareDeterminant_AreRefused()
+    public void Product_of_non_conforming_shapes_and_non_square_determinant_are_refused()
     {
         var a = RandomMatrix(new Random(3), 2, 3);
         Assert.Throws<ArgumentException>(() => a * a);
@@ -116,7 +116,7 @@ public class RationalMatrix_Algebra
     }
 
     [Fact]
-    public void SymmetryAndDiagonalShape_AreDetected()
+    public void Symmetry_and_diagonal_shape_are_detected()
     {
         Assert.True(RationalMatrix.FromRows([[1, 2], [2, 5]]).IsSymmetric);
         Assert.False(RationalMatrix.FromRows([[1, 2], [3, 5]]).IsSymmetric);

@@ -11,7 +11,7 @@ public class Rational_Arithmetic
         new(random.Next(-1000, 1001), random.Next(1, 200));
 
     [Fact]
-    public void FieldOperations_AgreeWithDoubles()
+    public void Field_operations_agree_with_doubles()
     {
         for (var i = 0; i < 500; i++)
         {
@@ -26,7 +26,7 @@ public class Rational_Arithmetic
     }
 
     [Fact]
-    public void FieldAxioms_HoldExactly()
+    public void Field_axioms_hold_exactly()
     {
         for (var i = 0; i < 300; i++)
         {
@@ -41,7 +41,7 @@ public class Rational_Arithmetic
     }
 
     [Fact]
-    public void Values_AreKeptInLowestTermsWithPositiveDenominator()
+    public void Values_are_kept_in_lowest_terms_with_positive_denominator()
     {
         var r = new Rational(6, -4);
         Assert.Equal(new BigInteger(-3), r.Numerator);
@@ -51,14 +51,14 @@ public class Rational_Arithmetic
     }
 
     [Fact]
-    public void DivisionByZero_Throws()
+    public void Division_by_zero_throws()
     {
         Assert.Throws<DivideByZeroException>(() => Rational.One / Rational.Zero);
         Assert.Throws<DivideByZeroException>(() => new Rational(1, 0));
     }
 
     [Fact]
-    public void FromDouble_IsExact_ForRandomDoublesOfEveryMagnitude()
+    public void From_double_is_exact_for_random_doubles_of_every_magnitude()
     {
         for (var i = 0; i < 1000; i++)
         {
@@ -71,7 +71,7 @@ public class Rational_Arithmetic
     }
 
     [Fact]
-    public void ToDouble_OfPartsBeyondTheRangeOfADouble_IsTheirRatio()
+    public void To_double_of_parts_beyond_the_range_of_a_double_is_their_ratio()
     {
         var big = BigInteger.Pow(10, 400);
         Assert.Equal(2.0 / 3.0, new Rational(2 * big + 1, 3 * big).ToDouble(), 15);
@@ -89,7 +89,7 @@ public class Rational_Arithmetic
     [InlineData("-1.5E2", -150, 1)]
     [InlineData("0.1", 1, 10)]
     [InlineData(" 4/-6 ", -2, 3)]
-    public void Parse_ReadsDecimalsAndFractionsExactly(string text, int numerator, int denominator)
+    public void Parse_reads_decimals_and_fractions_exactly(string text, int numerator, int denominator)
     {
         Assert.Equal(new Rational(numerator, denominator), Rational.Parse(text));
     }
@@ -104,13 +104,13 @@ public class Rational_Arithmetic
     [InlineData("1e999999999")]
     [InlineData("1e-999999999")]
     [InlineData("1.5e-2147483648")]
-    public void TryParse_RefusesMalformedOrUnboundedText(string text)
+    public void Try_parse_refuses_malformed_or_unbounded_text(string text)
     {
         Assert.False(Rational.TryParse(text, out _));
     }
 
     [Fact]
-    public void TryParse_AcceptsExponentsUpToTheStatedLimit()
+    public void Try_parse_accepts_exponents_up_to_the_stated_limit()
     {
         Assert.True(Rational.TryParse($"1e{Rational.MaxDecimalExponent}", out var big));
         Assert.Equal(BigInteger.Pow(10, Rational.MaxDecimalExponent), big.Numerator);
@@ -120,7 +120,7 @@ public class Rational_Arithmetic
     }
 
     [Fact]
-    public void ToString_RoundTripsThroughParse()
+    public void To_string_round_trips_through_parse()
     {
         for (var i = 0; i < 200; i++)
         {
@@ -130,7 +130,7 @@ public class Rational_Arithmetic
     }
 
     [Fact]
-    public void Pow_AndExactSqrt_AreInverse()
+    public void Pow_and_exact_sqrt_are_inverse()
     {
         var r = new Rational(-7, 3);
         Assert.Equal(new Rational(49, 9), r.Pow(2));
@@ -145,7 +145,7 @@ public class Rational_Arithmetic
     }
 
     [Fact]
-    public void Comparison_AgreesWithDoubles()
+    public void Comparison_agrees_with_doubles()
     {
         for (var i = 0; i < 300; i++)
         {

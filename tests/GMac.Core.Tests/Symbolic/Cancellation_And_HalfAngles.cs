@@ -7,7 +7,7 @@ public class Cancellation_And_HalfAngles
     private static readonly Scalar X = Scalar.Variable("x"), Y = Scalar.Variable("y"), T = Scalar.Variable("t");
 
     [Fact]
-    public void ExactMultiplesOfASum_CancelAgainstItsInverse()
+    public void Exact_multiples_of_a_sum_cancel_against_its_inverse()
     {
         var q = X * X + Y * Y;
         Assert.Same(Scalar.One, InverseCancellation.Cancel(X * X / q + Y * Y / q));
@@ -18,7 +18,7 @@ public class Cancellation_And_HalfAngles
     }
 
     [Fact]
-    public void CancellationReachesInsideDenominators()
+    public void Cancellation_reaches_inside_denominators()
     {
         var q = X * X + Y * Y;
         var inner = q * T / q - T + 2; // = 2 once q/q cancels
@@ -27,7 +27,7 @@ public class Cancellation_And_HalfAngles
     }
 
     [Fact]
-    public void HalfAngleProducts_BecomeFullAngleFunctions_WithTheSameValue()
+    public void Half_angle_products_become_full_angle_functions_with_the_same_value()
     {
         var u = T / 2;
         var value = Scalar.Cos(u) * Scalar.Cos(u) - Scalar.Sin(u) * Scalar.Sin(u) + 2 * Scalar.Sin(u) * Scalar.Cos(u) * X;

@@ -5,7 +5,7 @@ namespace GMac.Core.Tests.Symbolic;
 public class GeometricProductWorkload_Agreement
 {
     [Fact]
-    public void Symbolic_5D_product_evaluates_to_the_numeric_product()
+    public void Symbolic_5d_product_evaluates_to_the_numeric_product()
     {
         var workload = new GeometricProductWorkload(5);
         var symbolic = workload.Run();

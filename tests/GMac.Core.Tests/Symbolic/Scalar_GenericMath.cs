@@ -22,7 +22,7 @@ public class Scalar_GenericMath
     }
 
     [Fact]
-    public void A_formula_written_over_T_agrees_for_double_and_Scalar()
+    public void A_formula_written_over_t_agrees_for_double_and_scalar()
     {
         var symbolic = Formula(Scalar.Variable("x"), Scalar.Variable("y"));
         var random = new Random(3);

@@ -99,7 +99,7 @@ public sealed class LibraryMacros_Geometry
     [Theory]
     [InlineData(1e-9)]
     [InlineData(1.0)]
-    public void Rotor_interpolation_starts_at_R1_and_ends_at_R2(double alpha)
+    public void Rotor_interpolation_starts_at_r1_and_ends_at_r2(double alpha)
     {
         // R = cos θ + sin θ B̂ with unit bivectors in two different planes.
         var values = new Dictionary<string, double>

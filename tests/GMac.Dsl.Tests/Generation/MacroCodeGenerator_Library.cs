@@ -17,7 +17,7 @@ public class MacroCodeGenerator_Library
     private static GenerationOutcome Generate(string macro, params BindingSpec[] bindings) => Generator.Value.Generate(macro, bindings);
 
     [Fact]
-    public void GetNormalToVectors_AsInTheThesis_ThreeAssignmentsSixProductsThreeSubtractions()
+    public void Get_normal_to_vectors_as_in_the_thesis_three_assignments_six_products_three_subtractions()
     {
         var outcome = Generate("GetNormalToVectors",
             Bind("u.e1", "<u.x>"), Bind("u.e2", "<u.y>"), Bind("u.e3", "<u.z>"),
@@ -32,7 +32,7 @@ public class MacroCodeGenerator_Library
     }
 
     [Fact]
-    public void HiddenSurface_IsTwoProductsAndFiveSubtractions()
+    public void Hidden_surface_is_two_products_and_five_subtractions()
     {
         // (v2 - v1) ∧ (v3 - v1) in the plane: the cross-product form with its five differences (thesis §4.12.3).
         var outcome = Generate("HiddenSurface",
@@ -46,7 +46,7 @@ public class MacroCodeGenerator_Library
     }
 
     [Fact]
-    public void RotorToMatrix_WithTheNormalizedRotorClass_HasReducedDiagonals()
+    public void Rotor_to_matrix_with_the_normalized_rotor_class_has_reduced_diagonals()
     {
         var outcome = Generate("RotorToMatrix",
             Bind("r.1", "<R.w>"), Bind("r.e2^e3", "<R.x>"), Bind("r.e3^e1", "<R.y>"), Bind("r.e1^e2", "<R.z>"),
@@ -60,7 +60,7 @@ public class MacroCodeGenerator_Library
     }
 
     [Fact]
-    public void SphereThroughFourPoints_AtMostOneHundredOperations()
+    public void Sphere_through_four_points_at_most_one_hundred_operations()
     {
         var bindings = new List<BindingSpec>();
         foreach (var p in new[] { "p1", "p2", "p3", "p4" })
@@ -73,7 +73,7 @@ public class MacroCodeGenerator_Library
     }
 
     [Fact]
-    public void FullTwist_FewerOperationsThanFigure66()
+    public void Full_twist_fewer_operations_than_figure_66()
     {
         var outcome = Generate("ApplyTwistToPoint3D",
             new ClassBindingSpec("rot_axis", "Vector3D", "Axis", 1, 1),

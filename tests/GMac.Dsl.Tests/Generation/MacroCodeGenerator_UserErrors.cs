@@ -33,7 +33,7 @@ public sealed class MacroCodeGenerator_UserErrors
         new(parameter, blade, value, true, line, 3);
 
     [Fact]
-    public void AssumeMin_above_AssumeMax_is_reported_at_the_assumption_that_empties_the_bounds()
+    public void Assume_min_above_assume_max_is_reported_at_the_assumption_that_empties_the_bounds()
     {
         var outcome = Generator().Generate("Norm2",
         [
@@ -46,7 +46,7 @@ public sealed class MacroCodeGenerator_UserErrors
     }
 
     [Fact]
-    public void AssumeMax_below_a_class_binding_minimum_is_reported_at_the_assumption()
+    public void Assume_max_below_a_class_binding_minimum_is_reported_at_the_assumption()
     {
         var outcome = Generator().Generate("Norm2",
         [

@@ -22,7 +22,7 @@ public sealed class Binder_Frames
     }
 
     [Fact]
-    public void Transformed_frame_has_ipm_B_G_Bt()
+    public void Transformed_frame_has_ipm_b_g_bt()
     {
         // Rows of B are the new basis vectors: s = x + y, t = 2y, so s·s = 2, s·t = 2, t·t = 4.
         var f = Bind("""

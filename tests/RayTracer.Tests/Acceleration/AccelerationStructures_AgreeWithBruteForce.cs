@@ -29,7 +29,7 @@ public class AccelerationStructures_AgreeWithBruteForce
         var vertices = new Point3D[3 * triangles];
         for (int i = 0; i < triangles; i++)
         {
-            Point3D c = RandomPoint(10);
+            var c = RandomPoint(10);
             double size = random.NextDouble() < 0.1 ? 4 : 0.6;
             for (int k = 0; k < 3; k++)
             {
@@ -38,7 +38,7 @@ public class AccelerationStructures_AgreeWithBruteForce
         }
 
         var mesh = new Mesh(vertices, [.. Enumerable.Range(0, vertices.Length)]);
-        MeshTriangle[] meshTriangles = mesh.CreateTriangles(smooth: false);
+        var meshTriangles = mesh.CreateTriangles(smooth: false);
         for (int i = 0; i < triangles; i++)
         {
             // Half as mesh triangles, half as stand-alone triangles: both take the packed fast path.
@@ -84,15 +84,15 @@ public class AccelerationStructures_AgreeWithBruteForce
 
     [Theory]
     [MemberData(nameof(Kinds))]
-    public void NearestHitMatchesBruteForce(string kind)
+    public void Nearest_hit_matches_brute_force(string kind)
     {
-        List<GeometricObject> objects = RandomScene(100, 1500, 60, withPlane: true);
-        AccelerationStructure structure = Build(kind, objects);
+        var objects = RandomScene(100, 1500, 60, withPlane: true);
+        var structure = Build(kind, objects);
         var random = new SeededRandom(200);
         int hits = 0;
         for (int n = 0; n < 4000; n++)
         {
-            Ray ray = RandomRay(random, fromInside: n % 2 == 0);
+            var ray = RandomRay(random, fromInside: n % 2 == 0);
             var (tExpected, expected) = BruteForce(objects, ray);
             bool hit = structure.IntersectNearest(ray, double.PositiveInfinity, out double t, out int primitive);
             Assert.Equal(expected >= 0, hit);
@@ -104,7 +104,7 @@ public class AccelerationStructures_AgreeWithBruteForce
             hits++;
             Assert.Equal(tExpected, t);
             // Identical t means the same surface unless two objects are hit at exactly the same point.
-            GeometricObject found = structure.GetPrimitive(primitive);
+            var found = structure.GetPrimitive(primitive);
             Assert.True(ReferenceEquals(found, objects[expected]) || (found.Intersect(ray, out double tf) && tf == tExpected));
         }
 
@@ -113,11 +113,11 @@ public class AccelerationStructures_AgreeWithBruteForce
 
     [Theory]
     [MemberData(nameof(Kinds))]
-    public void AxisAlignedRaysMatchBruteForce(string kind)
+    public void Axis_aligned_rays_match_brute_force(string kind)
     {
         // Zero direction components exercise the infinite reciprocals in every traversal.
-        List<GeometricObject> objects = RandomScene(101, 800, 40);
-        AccelerationStructure structure = Build(kind, objects);
+        var objects = RandomScene(101, 800, 40);
+        var structure = Build(kind, objects);
         var random = new SeededRandom(201);
         for (int n = 0; n < 1500; n++)
         {
@@ -138,14 +138,14 @@ public class AccelerationStructures_AgreeWithBruteForce
 
     [Theory]
     [MemberData(nameof(Kinds))]
-    public void AnyHitAgreesWithBruteForceWithinTheDistance(string kind)
+    public void Any_hit_agrees_with_brute_force_within_the_distance(string kind)
     {
-        List<GeometricObject> objects = RandomScene(102, 1000, 40, withPlane: true);
-        AccelerationStructure structure = Build(kind, objects);
+        var objects = RandomScene(102, 1000, 40, withPlane: true);
+        var structure = Build(kind, objects);
         var random = new SeededRandom(202);
         for (int n = 0; n < 3000; n++)
         {
-            Ray ray = RandomRay(random, fromInside: true);
+            var ray = RandomRay(random, fromInside: true);
             double maxDistance = random.NextDouble(0.05, 1.5);
             var (tExpected, _) = BruteForce(objects, ray);
             Assert.Equal(tExpected < maxDistance, structure.IntersectAny(ray, maxDistance));
@@ -155,16 +155,16 @@ public class AccelerationStructures_AgreeWithBruteForce
 
     [Theory]
     [MemberData(nameof(Kinds))]
-    public void HitFillsTheShadingRecordOfTheNearestPrimitive(string kind)
+    public void Hit_fills_the_shading_record_of_the_nearest_primitive(string kind)
     {
-        List<GeometricObject> objects = RandomScene(103, 300, 30);
-        AccelerationStructure structure = Build(kind, objects);
+        var objects = RandomScene(103, 300, 30);
+        var structure = Build(kind, objects);
         var random = new SeededRandom(203);
         var viaStructure = new ShadingRecord(null);
         var direct = new ShadingRecord(null);
         for (int n = 0; n < 1000; n++)
         {
-            Ray ray = RandomRay(random, fromInside: false);
+            var ray = RandomRay(random, fromInside: false);
             var (tExpected, expected) = BruteForce(objects, ray);
             bool hit = structure.Hit(ray, out double t, viaStructure);
             Assert.Equal(expected >= 0, hit);
@@ -179,12 +179,12 @@ public class AccelerationStructures_AgreeWithBruteForce
 
     [Theory]
     [MemberData(nameof(Kinds))]
-    public void ShadowRaysIgnoreMeshesThatCastNoShadows(string kind)
+    public void Shadow_rays_ignore_meshes_that_cast_no_shadows(string kind)
     {
-        Mesh mesh = ThroughputReport.DisplacedSphere(500);
+        var mesh = ThroughputReport.DisplacedSphere(500);
         mesh.CastsShadows = false;
         var objects = new List<GeometricObject>(mesh.CreateTriangles(false)) { new Sphere(new Point3D(0, 0, -5), 1) };
-        AccelerationStructure structure = Build(kind, objects);
+        var structure = Build(kind, objects);
         var ray = new Ray(new Point3D(0, 0, 5), new Vector3D(0, 0, -1));
         Assert.True(structure.IntersectNearest(ray, double.PositiveInfinity, out double t, out _) && t < 5);
         Assert.False(structure.IntersectAny(ray, 8)); // only the mesh lies within 8
@@ -195,7 +195,7 @@ public class AccelerationStructures_AgreeWithBruteForce
 
     [Theory]
     [MemberData(nameof(Kinds))]
-    public void EmptyAndDegenerateScenesAreHandled(string kind)
+    public void Empty_and_degenerate_scenes_are_handled(string kind)
     {
         var ray = new Ray(new Point3D(0, 0, 5), new Vector3D(0, 0, -1));
         Assert.False(Build(kind, []).IntersectNearest(ray, double.PositiveInfinity, out _, out _));
@@ -208,7 +208,7 @@ public class AccelerationStructures_AgreeWithBruteForce
             flat.Add(new Triangle(new Point3D(i, 0, 0), new Point3D(i + 1, 0, 0), new Point3D(i, 1, 0)));
         }
 
-        AccelerationStructure structure = Build(kind, flat);
+        var structure = Build(kind, flat);
         Assert.True(structure.IntersectNearest(ray, double.PositiveInfinity, out double t, out _));
         Assert.Equal(5, t, 12);
         Assert.True(structure.IntersectNearest(new Ray(new Point3D(30.2, 0.3, -4), new Vector3D(0, 0, 1)), double.PositiveInfinity, out t, out _));

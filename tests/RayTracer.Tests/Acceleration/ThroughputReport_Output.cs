@@ -8,9 +8,9 @@ namespace RayTracer.Tests.Acceleration;
 public class ThroughputReport_Output
 {
     [Fact]
-    public void ProceduralMeshHasAtLeastTheRequestedTrianglesAndIsClosed()
+    public void Procedural_mesh_has_at_least_the_requested_triangles_and_is_closed()
     {
-        Mesh mesh = ThroughputReport.DisplacedSphere(5000);
+        var mesh = ThroughputReport.DisplacedSphere(5000);
         Assert.InRange(mesh.TriangleCount, 5000, 5000 * 1.1);
         // Every edge of a closed mesh is shared by exactly two triangles (pole fans included).
         var edges = new Dictionary<(int, int), int>();
@@ -30,13 +30,13 @@ public class ThroughputReport_Output
         for (int f = 0; f < mesh.TriangleCount; f++)
         {
             Point3D a = mesh.Vertices[mesh.Indices[3 * f]], b = mesh.Vertices[mesh.Indices[3 * f + 1]], c = mesh.Vertices[mesh.Indices[3 * f + 2]];
-            Vector3D n = Vector3D.Cross(b - a, c - a);
+            var n = Vector3D.Cross(b - a, c - a);
             Assert.True(Vector3D.Dot(n, a - Point3D.Origin) > 0, $"face {f} points inward");
         }
     }
 
     [Fact]
-    public void ReportNamesEveryStructureAndTheirHitCountsAgree()
+    public void Report_names_every_structure_and_their_hit_counts_agree()
     {
         var output = new StringWriter();
         ThroughputReport.Run(output, 2000, 32, 24, 2);
@@ -52,11 +52,11 @@ public class ThroughputReport_Output
     }
 
     [Fact]
-    public void PrimaryRaysHitTheSphereWhereTheCameraSeesIt()
+    public void Primary_rays_hit_the_sphere_where_the_camera_sees_it()
     {
         // Brute force over a small mesh: the count of rays hitting it must match the structure's.
-        Mesh mesh = ThroughputReport.DisplacedSphere(600);
-        MeshTriangle[] triangles = mesh.CreateTriangles(false);
+        var mesh = ThroughputReport.DisplacedSphere(600);
+        var triangles = mesh.CreateTriangles(false);
         var bvh = new Bvh(triangles);
         long viaBvh = ThroughputReport.CastPrimaryRays(bvh, 20, 15, 1);
         long brute = 0;

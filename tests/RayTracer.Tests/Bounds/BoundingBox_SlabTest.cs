@@ -10,7 +10,7 @@ public class BoundingBox_SlabTest
     private static readonly BoundingBox Box = new(new Point3D(-1, -2, -3), new Point3D(2, 1, 0.5));
 
     [Fact]
-    public void RaysAimedAtInteriorPointsHitAndBracketThem()
+    public void Rays_aimed_at_interior_points_hit_and_bracket_them()
     {
         var random = new SeededRandom(21);
         for (int n = 0; n < 2000; n++)
@@ -23,14 +23,14 @@ public class BoundingBox_SlabTest
             if (!Box.Contains(origin))
             {
                 // The entry point lies on the surface.
-                Point3D p = ray.At(t0);
+                var p = ray.At(t0);
                 Assert.True(Box.Expanded(1e-9).Contains(p) && !Box.Expanded(-1e-9).StrictlyContains(p));
             }
         }
     }
 
     [Fact]
-    public void RaysPointingAwayMiss()
+    public void Rays_pointing_away_miss()
     {
         var random = new SeededRandom(22);
         for (int n = 0; n < 1000; n++)
@@ -43,7 +43,7 @@ public class BoundingBox_SlabTest
     }
 
     [Fact]
-    public void AxisParallelRaysInsideAndOutsideTheSlab()
+    public void Axis_parallel_rays_inside_and_outside_the_slab()
     {
         // Zero direction components produce infinite reciprocals; the result must follow the slab.
         Assert.True(Box.Hit(new Ray(new Point3D(0, 0, -10), new Vector3D(0, 0, 1)), out double t0, out double t1));
@@ -55,7 +55,7 @@ public class BoundingBox_SlabTest
     }
 
     [Fact]
-    public void BoxBehindTheRayIsMissed()
+    public void Box_behind_the_ray_is_missed()
     {
         Assert.False(Box.Hit(new Ray(new Point3D(0, 0, 5), new Vector3D(0, 0, 1)), out _, out _));
     }

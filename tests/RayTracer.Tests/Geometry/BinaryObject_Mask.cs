@@ -8,7 +8,7 @@ namespace RayTracer.Tests.Geometry;
 public class BinaryObject_Mask
 {
     [Fact]
-    public void BinaryObjectShowsTheBaseSurfaceOnlyWhereTheMaskIsSet()
+    public void Binary_object_shows_the_base_surface_only_where_the_mask_is_set()
     {
         // Keep the half of the sphere with u < 0.5 (azimuth from +z towards +x below π, i.e. x > 0).
         var masked = new BinaryObject(new Sphere(Point3D.Origin, 1), sr => sr.TextureCoordinates.u < 0.5);
@@ -23,7 +23,7 @@ public class BinaryObject_Mask
     }
 
     [Fact]
-    public void AFullyMaskedRayMissesAndLeavesTheRecordUntouched()
+    public void A_fully_masked_ray_misses_and_leaves_the_record_untouched()
     {
         // Keep only the cap y > 0.9: a ray along the x axis crosses the sphere twice, both masked out.
         var masked = new BinaryObject(new Sphere(Point3D.Origin, 1), sr => sr.LocalHitPoint.y > 0.9);

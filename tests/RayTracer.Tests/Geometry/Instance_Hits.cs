@@ -10,7 +10,7 @@ namespace RayTracer.Tests.Geometry;
 public class Instance_Hits
 {
     [Fact]
-    public void InstancedUnitSphereMatchesTheAnalyticSphere()
+    public void Instanced_unit_sphere_matches_the_analytic_sphere()
     {
         // Uniform scale 2, rotation and translation: the image is the sphere of radius 2 at the moved centre.
         var instance = new Instance(new Sphere(Point3D.Origin, 1))
@@ -22,7 +22,7 @@ public class Instance_Hits
         int hits = 0;
         for (int n = 0; n < 2000; n++)
         {
-            Ray ray = ImplicitSurfaceMarch.RandomRayTowards(random, 10, 3);
+            var ray = ImplicitSurfaceMarch.RandomRayTowards(random, 10, 3);
             ray.o += new Vector3D(3, -1, 2);
             bool hi = instance.Hit(ray, out double ti, a);
             bool hr = reference.Hit(ray, out double tr, b);
@@ -39,7 +39,7 @@ public class Instance_Hits
     }
 
     [Fact]
-    public void NonUniformScaleGivesTheEllipsoidNormal()
+    public void Non_uniform_scale_gives_the_ellipsoid_normal()
     {
         // x²/4 + y² + z² = 1; normal ∝ (x/4, y, z).
         var ellipsoid = new Instance(new Sphere(Point3D.Origin, 1)).Scale(2, 1, 1);
@@ -48,7 +48,7 @@ public class Instance_Hits
         var target = new Point3D(2 * Math.Cos(0.6), Math.Sin(0.6), 0);
         Assert.True(ellipsoid.Hit(new Ray(origin, target - origin), out double t, sr));
         Assert.Equal(1, t, 9);
-        Normal3D expected = new Normal3D(target.x / 4, target.y, 0).Normalized();
+        var expected = new Normal3D(target.x / 4, target.y, 0).Normalized();
         Assert.True((sr.Normal - expected).Length < 1e-9);
         Assert.Equal(new BoundingBox(new Point3D(-2, -1, -1), new Point3D(2, 1, 1)).Max, ellipsoid.GetBoundingBox().Max);
     }

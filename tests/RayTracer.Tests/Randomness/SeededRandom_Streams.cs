@@ -5,7 +5,7 @@ namespace RayTracer.Tests.Randomness;
 public class SeededRandom_Streams
 {
     [Fact]
-    public void SameSeedAndStreamGiveTheSameSequence()
+    public void Same_seed_and_stream_give_the_same_sequence()
     {
         var a = new SeededRandom(42, 7);
         var b = new SeededRandom(1, 1);
@@ -17,7 +17,7 @@ public class SeededRandom_Streams
     }
 
     [Fact]
-    public void NeighbouringStreamsDiffer()
+    public void Neighbouring_streams_differ()
     {
         var a = new SeededRandom(42, 7);
         var b = new SeededRandom(42, 8);
@@ -31,7 +31,7 @@ public class SeededRandom_Streams
     }
 
     [Fact]
-    public void DoublesAreInTheUnitIntervalWithUniformMoments()
+    public void Doubles_are_in_the_unit_interval_with_uniform_moments()
     {
         var random = new SeededRandom(3);
         const int n = 200_000;
@@ -50,7 +50,7 @@ public class SeededRandom_Streams
     }
 
     [Fact]
-    public void IntegersCoverTheRangeEvenly()
+    public void Integers_cover_the_range_evenly()
     {
         var random = new SeededRandom(4);
         var counts = new int[7];
@@ -64,7 +64,7 @@ public class SeededRandom_Streams
     }
 
     [Fact]
-    public void ShuffleIsAPermutation()
+    public void Shuffle_is_a_permutation()
     {
         var random = new SeededRandom(5);
         int[] items = Enumerable.Range(0, 50).ToArray();

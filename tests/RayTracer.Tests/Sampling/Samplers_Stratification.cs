@@ -35,7 +35,7 @@ public class Samplers_Stratification
     }
 
     [Fact]
-    public void NRooks_has_one_sample_per_row_and_per_column()
+    public void N_rooks_has_one_sample_per_row_and_per_column()
     {
         var sampler = new NRooksSampler(7, numSets: 10);
         foreach (var set in Sets(sampler))
@@ -46,7 +46,7 @@ public class Samplers_Stratification
     }
 
     [Fact]
-    public void MultiJittered_is_jittered_and_n_rooks_on_the_fine_grid()
+    public void Multi_jittered_is_jittered_and_n_rooks_on_the_fine_grid()
     {
         var sampler = new MultiJitteredSampler(25, numSets: 10);
         foreach (var set in Sets(sampler))

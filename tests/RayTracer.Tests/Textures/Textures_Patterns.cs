@@ -19,7 +19,7 @@ public class Textures_Patterns
         new(null) { LocalHitPoint = local, TextureCoordinates = new TextureCoordinates(u, v) };
 
     [Fact]
-    public void Checker2D_alternates_between_neighbouring_checks()
+    public void Checker_2d_alternates_between_neighbouring_checks()
     {
         var checker = new Checker2D(4, 2);
         Assert.True(checker.Evaluate(0.1, 0.1));
@@ -30,7 +30,7 @@ public class Textures_Patterns
     }
 
     [Fact]
-    public void Checker3D_and_plane_checker_flip_across_cell_boundaries()
+    public void Checker_3d_and_plane_checker_flip_across_cell_boundaries()
     {
         var solid = new Checker3D(2.0);
         Assert.NotEqual(solid.Evaluate(new Point3D(0.5, 0.5, 0.5)), solid.Evaluate(new Point3D(2.5, 0.5, 0.5)));

@@ -54,7 +54,7 @@ public sealed class StrengthReductionPass(Func<int, string> temporaryName) : IOp
     {
         if (node is not PowerExpr p) return node.IsLeaf ? node : ExprFactory.Normalize(node);
         var magnitude = Math.Abs(p.Exponent);
-        Expr positive = magnitude <= LargestExpandedPower
+        var positive = magnitude <= LargestExpandedPower
             ? ExprFactory.Product(Enumerable.Repeat(p.Base, magnitude))
             : ExprFactory.Call("pow", p.Base, ExprFactory.Constant((double)magnitude));
         return p.Exponent < 0 ? ExprFactory.Quotient(ConstantExpr.One, positive) : positive;

@@ -12,7 +12,7 @@ public sealed class BeveledBox : CompoundObject
     public BeveledBox(Point3D p0, Point3D p1, double bevelRadius)
     {
         Point3D lo = Point3D.Min(p0, p1), hi = Point3D.Max(p0, p1);
-        Vector3D size = hi - lo;
+        var size = hi - lo;
         double rb = bevelRadius;
         if (!(rb > 0) || 2 * rb >= Math.Min(size.x, Math.Min(size.y, size.z)))
         {

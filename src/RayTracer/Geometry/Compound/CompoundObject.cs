@@ -22,7 +22,7 @@ public class CompoundObject : GeometricObject
         set
         {
             base.Material = value;
-            foreach (GeometricObject part in _parts)
+            foreach (var part in _parts)
             {
                 part.Material = value;
             }
@@ -48,7 +48,7 @@ public class CompoundObject : GeometricObject
         }
 
         bool any = false;
-        foreach (GeometricObject part in _parts)
+        foreach (var part in _parts)
         {
             if (part.ShadowHit(ray, out double t) && t < tmin)
             {
@@ -62,7 +62,7 @@ public class CompoundObject : GeometricObject
 
     public override bool Hit(in Ray ray, out double tmin, ShadingRecord sr)
     {
-        GeometricObject? nearest = Nearest(ray, out _);
+        var nearest = Nearest(ray, out _);
         if (nearest is null)
         {
             tmin = 0;
@@ -85,7 +85,7 @@ public class CompoundObject : GeometricObject
         }
 
         GeometricObject? nearest = null;
-        foreach (GeometricObject part in _parts)
+        foreach (var part in _parts)
         {
             if (part.Intersect(ray, out double t) && t < tmin)
             {

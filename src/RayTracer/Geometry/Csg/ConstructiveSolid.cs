@@ -87,7 +87,7 @@ public sealed class ConstructiveSolid : GeometricObject
             bool now = Combine(inLeft, inRight);
             if (now != inside)
             {
-                GeometricObject part = takeLeft ? Left : Right;
+                var part = takeLeft ? Left : Right;
                 double t = takeLeft ? leftT[i] : rightT[j];
                 double from = takeLeft ? leftFrom[i] : rightFrom[j];
                 tmin = t / length;

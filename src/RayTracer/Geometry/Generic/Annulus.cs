@@ -43,7 +43,7 @@ public sealed class Annulus : GeometricObject
             return false;
         }
 
-        Point3D p = ray.At(tmin);
+        var p = ray.At(tmin);
         double r = Math.Sqrt(p.x * p.x + p.z * p.z);
         sr.Normal = new Normal3D(0, 1, 0);
         sr.LocalHitPoint = p;

@@ -41,7 +41,7 @@ public sealed class Cone : GeometricObject
             return false;
         }
 
-        Point3D p = ray.At(tmin);
+        var p = ray.At(tmin);
         // Gradient of x² + z² - k (h - y)².
         var n = new Normal3D(p.x, _k * (Height - p.y), p.z);
         n.Normalize();

@@ -26,7 +26,7 @@ public class GenericPlane : GeometricObject
             return false;
         }
 
-        Point3D p = ray.At(tmin);
+        var p = ray.At(tmin);
         sr.Normal = new Normal3D(0, 1, 0);
         sr.LocalHitPoint = p;
         sr.TextureCoordinates = Coordinates(p.x, p.z);

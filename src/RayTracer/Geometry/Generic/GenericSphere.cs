@@ -29,8 +29,8 @@ public sealed class GenericSphere : GeometricObject
             return false;
         }
 
-        Point3D p = ray.At(tmin);
-        Normal3D n = new Normal3D(p.x, p.y, p.z).Normalized();
+        var p = ray.At(tmin);
+        var n = new Normal3D(p.x, p.y, p.z).Normalized();
         sr.Normal = n;
         sr.LocalHitPoint = p;
         sr.TextureCoordinates = Universal.Sphere.SphericalCoordinates(n);

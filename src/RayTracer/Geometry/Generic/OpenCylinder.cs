@@ -39,7 +39,7 @@ public class OpenCylinder : GeometricObject
             return false;
         }
 
-        Point3D p = ray.At(tmin);
+        var p = ray.At(tmin);
         var n = new Normal3D(p.x / Radius, 0, p.z / Radius);
         n.Normalize();
         if (NormalFacesRay && n.Dot(ray.d) > 0)

@@ -51,7 +51,7 @@ public sealed class PartSphere : GeometricObject
             return false;
         }
 
-        Point3D p = ray.At(tmin);
+        var p = ray.At(tmin);
         var n = new Normal3D(p.x, p.y, p.z).Normalized();
         var uv = new TextureCoordinates(
             Azimuth.Of(p.x, p.z) * MathConstants.InvTwoPi, 1 - Math.Acos(Math.Clamp(n.y, -1, 1)) * MathConstants.InvPi);

@@ -40,8 +40,8 @@ public class Torus : GeometricObject
             return false;
         }
 
-        Point3D p = ray.At(tmin);
-        Normal3D n = NormalAt(p);
+        var p = ray.At(tmin);
+        var n = NormalAt(p);
         if (FaceRay && n.Dot(ray.d) > 0)
         {
             n = -n;
@@ -94,8 +94,8 @@ public class Torus : GeometricObject
         // Solving from a point near the torus keeps the quartic's coefficients of similar size;
         // from far away they differ by many orders of magnitude and the roots lose accuracy.
         double shift = Math.Max(0, tEnter);
-        Point3D o = ray.At(shift);
-        Vector3D d = ray.d;
+        var o = ray.At(shift);
+        var d = ray.d;
 
         double a2 = SweptRadius * SweptRadius;
         double dd = d.LengthSquared;

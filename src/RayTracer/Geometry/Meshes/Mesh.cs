@@ -64,8 +64,8 @@ public sealed class Mesh : ObjectNature
     {
         get
         {
-            BoundingBox box = BoundingBox.Empty;
-            foreach (Point3D v in Vertices)
+            var box = BoundingBox.Empty;
+            foreach (var v in Vertices)
             {
                 box.Include(v);
             }

@@ -58,7 +58,7 @@ public sealed class MeshTriangle : GeometricObject, ITriangle
 
     public override bool Intersect(in Ray ray, out double t)
     {
-        Point3D v0 = V0;
+        var v0 = V0;
         return TriangleSolver.Intersect(ray, v0, V1 - v0, V2 - v0, double.PositiveInfinity, out t, out _, out _);
     }
 
@@ -82,7 +82,7 @@ public sealed class MeshTriangle : GeometricObject, ITriangle
 
     public override bool Hit(in Ray ray, out double tmin, ShadingRecord sr)
     {
-        Point3D v0 = V0;
+        var v0 = V0;
         Vector3D e1 = V1 - v0, e2 = V2 - v0;
         if (!TriangleSolver.Intersect(ray, v0, e1, e2, double.PositiveInfinity, out tmin, out double beta, out double gamma))
         {
@@ -93,7 +93,7 @@ public sealed class MeshTriangle : GeometricObject, ITriangle
         Normal3D n;
         if (Smooth)
         {
-            Normal3D[] normals = Mesh.Normals!;
+            var normals = Mesh.Normals!;
             n = alpha * normals[_i0] + beta * normals[_i1] + gamma * normals[_i2];
         }
         else
@@ -120,7 +120,7 @@ public sealed class MeshTriangle : GeometricObject, ITriangle
 
     public override BoundingBox GetBoundingBox()
     {
-        BoundingBox box = BoundingBox.Empty;
+        var box = BoundingBox.Empty;
         box.Include(V0);
         box.Include(V1);
         box.Include(V2);

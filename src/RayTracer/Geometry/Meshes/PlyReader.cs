@@ -28,7 +28,7 @@ public static class PlyReader
         ArgumentNullException.ThrowIfNull(stream);
         long? length = stream.CanSeek ? stream.Length - stream.Position : null;
         var input = new PlyInput(new BufferedStream(stream, 1 << 16), fileName, length);
-        Header header = ReadHeader(input);
+        var header = ReadHeader(input);
         return ReadBody(input, header);
     }
 
@@ -172,7 +172,7 @@ public static class PlyReader
 
     private static Mesh ReadBody(PlyInput input, Header header)
     {
-        Element vertexElement = header.Elements.Find(e => e.Name == "vertex")
+        var vertexElement = header.Elements.Find(e => e.Name == "vertex")
             ?? throw new MeshFormatException(input.FileName, "the header declares no 'vertex' element");
         int ix = vertexElement.Properties.FindIndex(p => p.Name == "x" && !p.IsList);
         int iy = vertexElement.Properties.FindIndex(p => p.Name == "y" && !p.IsList);
@@ -212,7 +212,7 @@ public static class PlyReader
             mustBeFinite[used] = true;
         }
 
-        foreach (Element element in header.Elements)
+        foreach (var element in header.Elements)
         {
             bool isVertex = ReferenceEquals(element, vertexElement);
             bool isFace = element.Name == "face" && !facesSeen;
@@ -240,7 +240,7 @@ public static class PlyReader
             {
                 for (int p = 0; p < element.Properties.Count; p++)
                 {
-                    Property property = element.Properties[p];
+                    var property = element.Properties[p];
                     if (!property.IsList)
                     {
                         long start = input.Offset;
@@ -435,7 +435,7 @@ public static class PlyReader
             }
 
             int size = Size(type);
-            Span<byte> bytes = _scratch.AsSpan(0, size);
+            var bytes = _scratch.AsSpan(0, size);
             int read = stream.ReadAtLeast(bytes, size, throwOnEndOfStream: false);
             if (read < size)
             {

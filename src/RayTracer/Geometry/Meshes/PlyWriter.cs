@@ -128,7 +128,7 @@ public static class PlyWriter
             buffer[0] = 3;
             for (int k = 0; k < 3; k++)
             {
-                Span<byte> slot = buffer.AsSpan(1 + 4 * k, 4);
+                var slot = buffer.AsSpan(1 + 4 * k, 4);
                 if (little)
                 {
                     BinaryPrimitives.WriteInt32LittleEndian(slot, mesh.Indices[3 * f + k]);

@@ -46,7 +46,7 @@ public static class StlWriter
         writer.WriteLine("solid mesh");
         for (int f = 0; f < mesh.TriangleCount; f++)
         {
-            Vector3D n = FaceNormal(mesh, f, out Point3D a, out Point3D b, out Point3D c);
+            var n = FaceNormal(mesh, f, out var a, out var b, out var c);
             writer.WriteLine($"  facet normal {N(n.x)} {N(n.y)} {N(n.z)}");
             writer.WriteLine("    outer loop");
             writer.WriteLine($"      vertex {N(a.x)} {N(a.y)} {N(a.z)}");
@@ -71,7 +71,7 @@ public static class StlWriter
         var record = new byte[50];
         for (int f = 0; f < mesh.TriangleCount; f++)
         {
-            Vector3D n = FaceNormal(mesh, f, out Point3D a, out Point3D b, out Point3D c);
+            var n = FaceNormal(mesh, f, out var a, out var b, out var c);
             Span<byte> s = record;
             PutVector(s, 0, n.x, n.y, n.z);
             PutVector(s, 12, a.x, a.y, a.z);

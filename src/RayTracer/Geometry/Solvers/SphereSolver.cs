@@ -9,7 +9,7 @@ public static class SphereSolver
     /// <summary>Both parameters where the ray's line meets the sphere (t0 ≤ t1); false if it misses.</summary>
     public static bool Intersect(in Ray ray, Point3D center, double radius, out double t0, out double t1)
     {
-        Vector3D oc = ray.o - center;
+        var oc = ray.o - center;
         double a = ray.d.LengthSquared;
         double b = 2 * Vector3D.Dot(oc, ray.d);
         double c = oc.LengthSquared - radius * radius;

@@ -12,7 +12,7 @@ public sealed class Box : GeometricObject
     public Box(Point3D p0, Point3D p1)
     {
         _bounds = new BoundingBox(Point3D.Min(p0, p1), Point3D.Max(p0, p1));
-        Vector3D d = _bounds.Diagonal;
+        var d = _bounds.Diagonal;
         if (!(d.x > 0 && d.y > 0 && d.z > 0))
         {
             throw new ArgumentException("A box needs a positive extent along every axis.");

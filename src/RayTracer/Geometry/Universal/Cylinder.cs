@@ -54,8 +54,8 @@ public sealed class Cylinder : GeometricObject
             return false;
         }
 
-        Point3D p = ray.At(tmin);
-        Vector3D rel = p - BaseCenter;
+        var p = ray.At(tmin);
+        var rel = p - BaseCenter;
         double h = Vector3D.Dot(rel, _unitAxis);
         Normal3D n;
         if (part == 0)
@@ -80,7 +80,7 @@ public sealed class Cylinder : GeometricObject
 
     public override BoundingBox GetBoundingBox()
     {
-        Point3D top = BaseCenter + Axis;
+        var top = BaseCenter + Axis;
         var e = new Vector3D(
             Radius * Math.Sqrt(Math.Max(0, 1 - _unitAxis.x * _unitAxis.x)),
             Radius * Math.Sqrt(Math.Max(0, 1 - _unitAxis.y * _unitAxis.y)),
@@ -91,11 +91,11 @@ public sealed class Cylinder : GeometricObject
     /// <summary>part: 0 tube, 1 base cap, 2 top cap.</summary>
     private bool Solve(in Ray ray, out double t, out int part)
     {
-        Vector3D oc = ray.o - BaseCenter;
+        var oc = ray.o - BaseCenter;
         double dAxial = Vector3D.Dot(ray.d, _unitAxis);
         double oAxial = Vector3D.Dot(oc, _unitAxis);
-        Vector3D dPerp = ray.d - dAxial * _unitAxis;
-        Vector3D oPerp = oc - oAxial * _unitAxis;
+        var dPerp = ray.d - dAxial * _unitAxis;
+        var oPerp = oc - oAxial * _unitAxis;
 
         t = double.PositiveInfinity;
         part = -1;

@@ -49,8 +49,8 @@ public sealed class Disk : GeometricObject, ISampledShape
             return false;
         }
 
-        Point3D p = ray.At(tmin);
-        Vector3D local = p - Center;
+        var p = ray.At(tmin);
+        var local = p - Center;
         double r = local.Length / Radius;
         double phi = Math.Atan2(Vector3D.Dot(local, _frame.V), Vector3D.Dot(local, _frame.U));
         if (phi < 0)

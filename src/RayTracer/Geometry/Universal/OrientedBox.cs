@@ -19,8 +19,8 @@ public sealed class OrientedBox : GeometricObject
     /// </summary>
     public OrientedBox(Point3D center, Vector3D axisU, Vector3D axisV, Vector3D halfExtents)
     {
-        Vector3D u = axisU.Normalized();
-        Vector3D v = axisV - Vector3D.Dot(axisV, u) * u;
+        var u = axisU.Normalized();
+        var v = axisV - Vector3D.Dot(axisV, u) * u;
         if (!(v.LengthSquared > 0) || !double.IsFinite(u.x))
         {
             throw new ArgumentException("The box axes must be non-zero and not parallel.");
@@ -43,7 +43,7 @@ public sealed class OrientedBox : GeometricObject
 
     public override bool Hit(in Ray ray, out double tmin, ShadingRecord sr)
     {
-        if (!Solve(ray, out tmin, out Normal3D n))
+        if (!Solve(ray, out tmin, out var n))
         {
             return false;
         }
@@ -67,7 +67,7 @@ public sealed class OrientedBox : GeometricObject
 
     private bool Solve(in Ray ray, out double t, out Normal3D normal)
     {
-        Vector3D rel = ray.o - Center;
+        var rel = ray.o - Center;
         double tIn = double.NegativeInfinity, tOut = double.PositiveInfinity;
         int axisIn = -1, axisOut = -1;
         double signIn = 0, signOut = 0;

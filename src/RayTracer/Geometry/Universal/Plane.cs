@@ -36,7 +36,7 @@ public sealed class Plane : GeometricObject
             return false;
         }
 
-        Point3D p = ray.At(tmin);
+        var p = ray.At(tmin);
         sr.Normal = Normal;
         sr.LocalHitPoint = p;
         sr.TextureCoordinates = default;

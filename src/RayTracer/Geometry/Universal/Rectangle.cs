@@ -13,7 +13,7 @@ public sealed class Rectangle : GeometricObject, ISampledShape
 
     public Rectangle(Point3D corner, Vector3D a, Vector3D b)
     {
-        Vector3D n = Vector3D.Cross(a, b);
+        var n = Vector3D.Cross(a, b);
         if (n.LengthSquared == 0)
         {
             throw new ArgumentException("Rectangle sides must be non-zero and not parallel.");
@@ -65,7 +65,7 @@ public sealed class Rectangle : GeometricObject, ISampledShape
 
     public override BoundingBox GetBoundingBox()
     {
-        BoundingBox box = BoundingBox.Empty;
+        var box = BoundingBox.Empty;
         box.Include(Corner);
         box.Include(Corner + A);
         box.Include(Corner + B);
@@ -89,7 +89,7 @@ public sealed class Rectangle : GeometricObject, ISampledShape
             return false;
         }
 
-        Vector3D d = ray.At(t) - Corner;
+        var d = ray.At(t) - Corner;
         u = Vector3D.Dot(d, A) / _aLengthSquared;
         v = Vector3D.Dot(d, B) / _bLengthSquared;
         return u >= 0 && u <= 1 && v >= 0 && v <= 1;

@@ -33,7 +33,7 @@ public sealed class Sphere : GeometricObject, ISampledShape
             return false;
         }
 
-        Point3D p = ray.At(tmin);
+        var p = ray.At(tmin);
         var n = new Normal3D((p - Center) / Radius);
         n.Normalize();
         sr.Normal = n;

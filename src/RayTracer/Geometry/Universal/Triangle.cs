@@ -54,7 +54,7 @@ public sealed class Triangle : GeometricObject, ITriangle, ISampledShape
 
     public override BoundingBox GetBoundingBox()
     {
-        BoundingBox box = BoundingBox.Empty;
+        var box = BoundingBox.Empty;
         box.Include(V0);
         box.Include(V1);
         box.Include(V2);

@@ -9,7 +9,7 @@ namespace RayTracer.Tests.Geometry.Compound;
 public class CompoundObjects_Hits
 {
     [Fact]
-    public void CompoundReturnsTheNearestPartAndItsShading()
+    public void Compound_returns_the_nearest_part_and_its_shading()
     {
         var near = new Sphere(new Point3D(0, 0, 2), 1);
         var far = new Sphere(new Point3D(0, 0, -2), 1.5);
@@ -26,7 +26,7 @@ public class CompoundObjects_Hits
     }
 
     [Fact]
-    public void SolidCylinderIsClosedWithOutwardNormals()
+    public void Solid_cylinder_is_closed_with_outward_normals()
     {
         var solid = new SolidCylinder(-1, 2, 1);
         var sr = new ShadingRecord(null);
@@ -39,7 +39,7 @@ public class CompoundObjects_Hits
     }
 
     [Fact]
-    public void BeveledBoxMatchesItsRoundedShape()
+    public void Beveled_box_matches_its_rounded_shape()
     {
         // Box [-1,1]³ with bevel 0.25: the inner box is [-0.75,0.75]³ and the surface is at distance 0.25 from it.
         var box = new BeveledBox(new Point3D(-1, -1, -1), new Point3D(1, 1, 1), 0.25);
@@ -53,7 +53,7 @@ public class CompoundObjects_Hits
         var sr = new ShadingRecord(null);
         for (int n = 0; n < 300; n++)
         {
-            Ray ray = ImplicitSurfaceMarch.RandomRayTowards(random, 6, 1.5);
+            var ray = ImplicitSurfaceMarch.RandomRayTowards(random, 6, 1.5);
             if (F(ray.o) <= 0)
             {
                 continue; // from outside only: inside, the hidden inner parts of the pieces are hit
@@ -71,7 +71,7 @@ public class CompoundObjects_Hits
     }
 
     [Fact]
-    public void BeveledCylinderTopAndRim()
+    public void Beveled_cylinder_top_and_rim()
     {
         var cyl = new BeveledCylinder(0, 2, 1, 0.2);
         Assert.True(cyl.Intersect(new Ray(new Point3D(0, 5, 0), new Vector3D(0, -1, 0)), out double t));

@@ -19,7 +19,7 @@ public class ConstructiveSolid_Hits
 
     [Theory]
     [MemberData(nameof(Operations))]
-    public void SphereCombinationsMatchTheMarchedSignedDistance(SolidOperation operation)
+    public void Sphere_combinations_match_the_marched_signed_distance(SolidOperation operation)
     {
         var solid = new ConstructiveSolid(operation, new Sphere(CenterA, 1), new Sphere(CenterB, 0.8));
         Func<Point3D, double> f = operation switch
@@ -34,7 +34,7 @@ public class ConstructiveSolid_Hits
         for (int n = 0; n < 400; n++)
         {
             // Rays from inside and outside, with unnormalized directions.
-            Ray ray = ImplicitSurfaceMarch.RandomRayTowards(random, n % 2 == 0 ? 1.2 : 5, 1.2);
+            var ray = ImplicitSurfaceMarch.RandomRayTowards(random, n % 2 == 0 ? 1.2 : 5, 1.2);
             ray.d *= random.NextDouble(0.3, 3);
             double? expected = ImplicitSurfaceMarch.FirstRoot(f, new Ray(ray.o, ray.d.Normalized()), 15, 1e-3);
             bool hit = solid.Hit(ray, out double t, sr);
@@ -46,7 +46,7 @@ public class ConstructiveSolid_Hits
 
             hits++;
             Assert.Equal(expected!.Value, t * ray.d.Length, 6);
-            Point3D p = ray.At(t);
+            var p = ray.At(t);
             // The normal points out of the combined solid: stepping along it leaves the solid.
             Assert.True(f(p + 1e-4 * sr.Normal.ToVector()) > 0 && f(p - 1e-4 * sr.Normal.ToVector()) < 0, $"{operation}: normal {sr.Normal} at {p}");
         }
@@ -55,7 +55,7 @@ public class ConstructiveSolid_Hits
     }
 
     [Fact]
-    public void BoxWithASphericalBiteAndNestedOperands()
+    public void Box_with_a_spherical_bite_and_nested_operands()
     {
         // (box − sphere) ∪ raised torus, with instanced operands: any closed solid can be an operand.
         GeometricObject box = new Instance(new Box(new Point3D(-1, -1, -1), new Point3D(1, 1, 1))).Translate(0, 0, 0);
@@ -73,7 +73,7 @@ public class ConstructiveSolid_Hits
     }
 
     [Fact]
-    public void DisjointIntersectionIsEmpty()
+    public void Disjoint_intersection_is_empty()
     {
         var solid = new ConstructiveSolid(SolidOperation.Intersection, new Sphere(new Point3D(-3, 0, 0), 1), new Sphere(new Point3D(3, 0, 0), 1));
         Assert.False(solid.Intersect(new Ray(new Point3D(-10, 0, 0), new Vector3D(1, 0, 0)), out _));

@@ -40,7 +40,7 @@ public class GenericObjects_AgreeWithBruteForce
 
     [Theory]
     [MemberData(nameof(Cases))]
-    public void HitsMatchMarchedRootsAndNormalsAreUnit(string name)
+    public void Hits_match_marched_roots_and_normals_are_unit(string name)
     {
         var (obj, f, accept, closed) = Make(name);
         var random = new SeededRandom((ulong)name.GetHashCode(StringComparison.Ordinal) & 0xffff);
@@ -48,7 +48,7 @@ public class GenericObjects_AgreeWithBruteForce
         int hits = 0;
         for (int n = 0; n < 250; n++)
         {
-            Ray ray = ImplicitSurfaceMarch.RandomRayTowards(random, 6, 2);
+            var ray = ImplicitSurfaceMarch.RandomRayTowards(random, 6, 2);
             double? expected = ImplicitSurfaceMarch.FirstRoot(f, ray, 20, 1e-3, accept);
             bool hit = obj.Hit(ray, out double t, sr);
             Assert.True(expected.HasValue == hit, $"{name}: ray {ray} expected {expected}, got {(hit ? t : "miss")}");
@@ -64,7 +64,7 @@ public class GenericObjects_AgreeWithBruteForce
             if (closed)
             {
                 // Outward: along the gradient of the implicit function.
-                Point3D p = ray.At(t);
+                var p = ray.At(t);
                 const double h = 1e-6;
                 var grad = new Vector3D(
                     f(p + new Vector3D(h, 0, 0)) - f(p - new Vector3D(h, 0, 0)),
@@ -82,7 +82,7 @@ public class GenericObjects_AgreeWithBruteForce
     }
 
     [Fact]
-    public void TorusAlongTheEquatorHitsTheOuterRimAndThroughTheHoleMisses()
+    public void Torus_along_the_equator_hits_the_outer_rim_and_through_the_hole_misses()
     {
         var torus = new Torus(2, 0.5);
         Assert.True(torus.Intersect(new Ray(new Point3D(-100, 0, 0), new Vector3D(1, 0, 0)), out double t));
@@ -94,7 +94,7 @@ public class GenericObjects_AgreeWithBruteForce
     }
 
     [Fact]
-    public void GrazingTheConeAndCylinderRims()
+    public void Grazing_the_cone_and_cylinder_rims()
     {
         var cylinder = new OpenCylinder(0, 1, 1);
         Assert.True(cylinder.Intersect(new Ray(new Point3D(-5, 0.5, 1 - 1e-7), new Vector3D(1, 0, 0)), out double t));
@@ -103,7 +103,7 @@ public class GenericObjects_AgreeWithBruteForce
         var cone = new Cone(1, 1);
         // Ray parallel to a generatrix: the quadratic degenerates to a linear equation.
         Assert.True(cone.Intersect(new Ray(new Point3D(-0.5, -1, 0), new Vector3D(1, 1, 0)), out t));
-        Point3D p = new Ray(new Point3D(-0.5, -1, 0), new Vector3D(1, 1, 0)).At(t);
+        var p = new Ray(new Point3D(-0.5, -1, 0), new Vector3D(1, 1, 0)).At(t);
         Assert.Equal(Math.Abs(p.x), 1 - p.y, 9);
     }
 }

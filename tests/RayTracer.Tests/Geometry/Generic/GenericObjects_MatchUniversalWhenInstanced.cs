@@ -18,8 +18,8 @@ public class GenericObjects_MatchUniversalWhenInstanced
 
     private static (GeometricObject Generic, GeometricObject Universal) Make(string name)
     {
-        Point3D centre = Placement.TransformPoint(Point3D.Origin);
-        Normal3D up = Placement.TransformNormal(new Normal3D(0, 1, 0)).Normalized();
+        var centre = Placement.TransformPoint(Point3D.Origin);
+        var up = Placement.TransformNormal(new Normal3D(0, 1, 0)).Normalized();
         return name switch
         {
             "sphere" => (new GenericSphere(1.5), new Sphere(centre, 1.5 * 1.7)),
@@ -35,7 +35,7 @@ public class GenericObjects_MatchUniversalWhenInstanced
 
     [Theory]
     [MemberData(nameof(Cases))]
-    public void HitsDistancesAndNormalsAgree(string name)
+    public void Hits_distances_and_normals_agree(string name)
     {
         var (generic, universal) = Make(name);
         var instance = new Instance(generic, Placement);
@@ -45,14 +45,14 @@ public class GenericObjects_MatchUniversalWhenInstanced
         int hits = 0;
         for (int n = 0; n < 2000; n++)
         {
-            Ray ray = ImplicitSurfaceMarch.RandomRayTowards(random, 8, 3);
+            var ray = ImplicitSurfaceMarch.RandomRayTowards(random, 8, 3);
             ray.o += Placement.TransformPoint(Point3D.Origin) - Point3D.Origin;
             bool hi = instance.Hit(ray, out double ti, a);
             bool hu = universal.Hit(ray, out double tu, b);
             if (hi != hu)
             {
                 // Only rays that graze an edge within rounding may disagree.
-                Point3D p = ray.At(hi ? ti : tu);
+                var p = ray.At(hi ? ti : tu);
                 Assert.Fail($"{name}: instance {hi}, universal {hu} at {p}");
             }
 

@@ -49,7 +49,7 @@ public class MeshFiles_HostileInput
         byte[] bytes = [.. Encoding.ASCII.GetBytes(text), .. body];
 
         // The time limit is only a safety net against a hang.
-        Mesh mesh = await Task.Run(() => Read(bytes)).WaitAsync(TimeSpan.FromSeconds(30));
+        var mesh = await Task.Run(() => Read(bytes)).WaitAsync(TimeSpan.FromSeconds(30));
         Assert.Equal(1, mesh.TriangleCount);
     }
 
@@ -59,7 +59,7 @@ public class MeshFiles_HostileInput
         byte[] bytes = BinaryPly(TriangleHeader + $"element edge {Huge}\nproperty int vertex1\nproperty int vertex2\n", null, new byte[16]);
         int edgesStart = bytes.Length - 16;
 
-        MeshFormatException e = Fails(bytes);
+        var e = Fails(bytes);
 
         Assert.Equal(edgesStart, e.ByteOffset);
         Assert.Contains($"element 'edge' declares {Huge} items of at least 8 bytes, but only 16 bytes remain", e.Message);
@@ -70,7 +70,7 @@ public class MeshFiles_HostileInput
     {
         byte[] bytes = BinaryPly(TriangleHeader + "element material 4000\nproperty list ushort uchar name\n", null, new byte[10]);
 
-        MeshFormatException e = Fails(bytes);
+        var e = Fails(bytes);
 
         Assert.Equal(bytes.Length - 10, e.ByteOffset);
         Assert.Contains("element 'material' declares 4000 items of at least 2 bytes, but only 10 bytes remain", e.Message);
@@ -83,7 +83,7 @@ public class MeshFiles_HostileInput
         BinaryPrimitives.WriteInt32LittleEndian(tail, 2_000_000_000);
         byte[] bytes = BinaryPly(TriangleHeader + "element material 1\nproperty list int uchar name\n", null, tail);
 
-        MeshFormatException e = Fails(bytes);
+        var e = Fails(bytes);
 
         Assert.Equal(bytes.Length - 8, e.ByteOffset);
         Assert.Contains("material 0 declares 2000000000 items, but only 8 bytes remain", e.Message);
@@ -95,7 +95,7 @@ public class MeshFiles_HostileInput
         string text = "ply\nformat ascii 1.0\n" + TriangleHeader + $"element edge {Huge}\nproperty int vertex1\nend_header\n" +
             "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n7\n8\n";
 
-        MeshFormatException e = FailsAscii(text);
+        var e = FailsAscii(text);
 
         Assert.Contains("ends inside edge 2", e.Message);
         Assert.Equal(18, e.Line);
@@ -109,7 +109,7 @@ public class MeshFiles_HostileInput
     {
         string text = "ply\nformat ascii 1.0\n" + TriangleHeader + "end_header\n0 0 0\n" + value + " 0 0\n0 1 0\n3 0 1 2\n";
 
-        MeshFormatException e = FailsAscii(text);
+        var e = FailsAscii(text);
 
         Assert.Equal(11, e.Line);
         Assert.Contains($"vertex 1 has a non-finite {axis}", e.Message);
@@ -121,7 +121,7 @@ public class MeshFiles_HostileInput
         byte[] bytes = BinaryPly(TriangleHeader, [0, 0, 0, 1, 0, 0, 0, 1, float.PositiveInfinity]);
         int bodyStart = bytes.Length - 9 * 4 - 13;
 
-        MeshFormatException e = Fails(bytes);
+        var e = Fails(bytes);
 
         Assert.Equal(bodyStart + 8 * 4, e.ByteOffset);
         Assert.Contains("vertex 2 has a non-finite z", e.Message);
@@ -182,7 +182,7 @@ public class MeshFiles_HostileInput
         string text = "ply\nformat ascii 1.0\nCreated by Blender3D 247 - www.blender.org, source file: 'cube.blend'\n" + TriangleHeader +
             "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
 
-        Mesh mesh = Read(Encoding.ASCII.GetBytes(text), "blender.ply");
+        var mesh = Read(Encoding.ASCII.GetBytes(text), "blender.ply");
 
         Assert.Equal(1, mesh.TriangleCount);
         string warning = Assert.Single(mesh.Warnings);

@@ -11,47 +11,47 @@ public class MeshFiles_Malformed
     private const string Header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
 
     [Fact]
-    public void MissingMagicIsReportedOnLineOne()
+    public void Missing_magic_is_reported_on_line_one()
     {
-        MeshFormatException e = ReadPly("plx\nformat ascii 1.0\n");
+        var e = ReadPly("plx\nformat ascii 1.0\n");
         Assert.Equal(1, e.Line);
         Assert.Equal("bad.ply", e.FileName);
         Assert.StartsWith("bad.ply(1):", e.Message);
     }
 
     [Fact]
-    public void UnknownPropertyTypeIsReportedOnItsLine()
+    public void Unknown_property_type_is_reported_on_its_line()
     {
-        MeshFormatException e = ReadPly("ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n");
+        var e = ReadPly("ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n");
         Assert.Equal(4, e.Line);
         Assert.Contains("quad", e.Message);
     }
 
     [Fact]
-    public void BadNumberInTheBodyNamesItsLine()
+    public void Bad_number_in_the_body_names_its_line()
     {
-        MeshFormatException e = ReadPly(Header + "0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n");
+        var e = ReadPly(Header + "0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n");
         Assert.Equal(11, e.Line);
         Assert.Contains("zero", e.Message);
     }
 
     [Fact]
-    public void OutOfRangeIndexIsRejected()
+    public void Out_of_range_index_is_rejected()
     {
-        MeshFormatException e = ReadPly(Header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n");
+        var e = ReadPly(Header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n");
         Assert.Equal(13, e.Line);
         Assert.Contains("vertex 3", e.Message);
     }
 
     [Fact]
-    public void TruncatedAsciiBodyIsReported()
+    public void Truncated_ascii_body_is_reported()
     {
-        MeshFormatException e = ReadPly(Header + "0 0 0\n1 0 0\n0 1");
+        var e = ReadPly(Header + "0 0 0\n1 0 0\n0 1");
         Assert.Contains("ends inside vertex 2", e.Message);
     }
 
     [Fact]
-    public void AbsurdDeclaredCountsFailOnTheTruncatedBodyNotOnMemory()
+    public void Absurd_declared_counts_fail_on_the_truncated_body_not_on_memory()
     {
         string header = "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\nproperty double x\nproperty double y\nproperty double z\nend_header\n";
         byte[] bytes = [.. Encoding.ASCII.GetBytes(header), .. new byte[30]];
@@ -61,14 +61,14 @@ public class MeshFiles_Malformed
     }
 
     [Fact]
-    public void MissingEndHeaderIsReported()
+    public void Missing_end_header_is_reported()
     {
-        MeshFormatException e = ReadPly("ply\nformat ascii 1.0\nelement vertex 0\n");
+        var e = ReadPly("ply\nformat ascii 1.0\nelement vertex 0\n");
         Assert.Contains("end_header", e.Message);
     }
 
     [Fact]
-    public void TruncatedBinaryPlyGivesTheByteOffset()
+    public void Truncated_binary_ply_gives_the_byte_offset()
     {
         using var stream = new MemoryStream();
         PlyWriter.Write(MeshSamples.Octahedron(false), stream, PlyFormat.BinaryLittleEndian);
@@ -89,7 +89,7 @@ public class MeshFiles_Malformed
     }
 
     [Fact]
-    public void TruncatedBinaryStlGivesTheByteOffsetAndTriangle()
+    public void Truncated_binary_stl_gives_the_byte_offset_and_triangle()
     {
         using var stream = new MemoryStream();
         StlWriter.Write(MeshSamples.FloatExactSoup(10, 1), stream, StlFormat.Binary);
@@ -100,7 +100,7 @@ public class MeshFiles_Malformed
     }
 
     [Fact]
-    public void MalformedAsciiStlNamesTheLine()
+    public void Malformed_ascii_stl_names_the_line()
     {
         const string text = "solid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 0 1 oops\n  endloop\n endfacet\nendsolid x\n";
         var e = Assert.Throws<MeshFormatException>(() => StlReader.Read(new MemoryStream(Encoding.ASCII.GetBytes(text)), "bad.stl"));
@@ -109,7 +109,7 @@ public class MeshFiles_Malformed
     }
 
     [Fact]
-    public void AsciiStlWithoutEndsolidIsReported()
+    public void Ascii_stl_without_endsolid_is_reported()
     {
         const string text = "solid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n  endloop\n endfacet\n";
         var e = Assert.Throws<MeshFormatException>(() => StlReader.Read(new MemoryStream(Encoding.ASCII.GetBytes(text)), "bad.stl"));
@@ -117,7 +117,7 @@ public class MeshFiles_Malformed
     }
 
     [Fact]
-    public void GarbageThatIsNeitherFormatIsRejected()
+    public void Garbage_that_is_neither_format_is_rejected()
     {
         var e = Assert.Throws<MeshFormatException>(() => StlReader.Read(new MemoryStream(new byte[40]), "tiny.stl"));
         Assert.Equal("tiny.stl", e.FileName);

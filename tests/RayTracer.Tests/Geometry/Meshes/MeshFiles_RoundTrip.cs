@@ -16,11 +16,11 @@ public class MeshFiles_RoundTrip
     [InlineData(PlyFormat.Ascii)]
     [InlineData(PlyFormat.BinaryLittleEndian)]
     [InlineData(PlyFormat.BinaryBigEndian)]
-    public void PlyRoundTripsExactly(PlyFormat format)
+    public void Ply_round_trips_exactly(PlyFormat format)
     {
         foreach (bool attributes in new[] { false, true })
         {
-            Mesh mesh = MeshSamples.Octahedron(attributes);
+            var mesh = MeshSamples.Octahedron(attributes);
             // Coordinates with many significant digits, to check nothing is rounded.
             for (int i = 0; i < mesh.Vertices.Length; i++)
             {
@@ -35,13 +35,13 @@ public class MeshFiles_RoundTrip
     }
 
     [Fact]
-    public void PlyThroughAFileOnDisk()
+    public void Ply_through_a_file_on_disk()
     {
         string dir = Directory.CreateTempSubdirectory("rt-ply").FullName;
         try
         {
             string path = Path.Combine(dir, "mesh.ply");
-            Mesh mesh = MeshSamples.FloatExactSoup(50, 3);
+            var mesh = MeshSamples.FloatExactSoup(50, 3);
             PlyWriter.Write(mesh, path, PlyFormat.BinaryLittleEndian);
             AssertSameMesh(mesh, PlyReader.Read(path));
             Assert.Single(Directory.GetFiles(dir)); // no temporary file left behind
@@ -57,15 +57,15 @@ public class MeshFiles_RoundTrip
     [InlineData("mesh.PLY", true)]
     [InlineData("mesh.stl", false)]
     [InlineData("mesh.stl", true)]
-    public void MeshFileDispatchesOnTheExtension(string name, bool ascii)
+    public void Mesh_file_dispatches_on_the_extension(string name, bool ascii)
     {
         string dir = Directory.CreateTempSubdirectory("rt-mesh").FullName;
         try
         {
             string path = Path.Combine(dir, name);
-            Mesh mesh = MeshSamples.FloatExactSoup(20, 9);
+            var mesh = MeshSamples.FloatExactSoup(20, 9);
             MeshFile.Write(mesh, path, ascii);
-            Mesh read = MeshFile.Read(path);
+            var read = MeshFile.Read(path);
             Assert.Equal(mesh.TriangleCount, read.TriangleCount);
             for (int i = 0; i < mesh.Indices.Length; i++)
             {
@@ -81,7 +81,7 @@ public class MeshFiles_RoundTrip
     }
 
     [Fact]
-    public void PlyReaderSplitsPolygonsAndSkipsUnknownElements()
+    public void Ply_reader_splits_polygons_and_skips_unknown_elements()
     {
         const string text = """
             ply
@@ -109,20 +109,20 @@ public class MeshFiles_RoundTrip
             5 0 1 2 4 3 9
             0 1
             """;
-        Mesh mesh = PlyReader.Read(new MemoryStream(System.Text.Encoding.ASCII.GetBytes(text)), "poly.ply");
+        var mesh = PlyReader.Read(new MemoryStream(System.Text.Encoding.ASCII.GetBytes(text)), "poly.ply");
         Assert.Equal(6, mesh.Vertices.Length);
         Assert.Equal(2 + 3, mesh.TriangleCount);
         Assert.Equal(new[] { 0, 1, 2, 0, 2, 3, 0, 1, 2, 0, 2, 4, 0, 4, 3 }, mesh.Indices);
     }
 
     [Fact]
-    public void StlAsciiRoundTripsExactly()
+    public void Stl_ascii_round_trips_exactly()
     {
-        Mesh mesh = MeshSamples.Octahedron(false);
+        var mesh = MeshSamples.Octahedron(false);
         using var stream = new MemoryStream();
         StlWriter.Write(mesh, stream, StlFormat.Ascii);
         stream.Position = 0;
-        Mesh read = StlReader.Read(stream, "octahedron.stl");
+        var read = StlReader.Read(stream, "octahedron.stl");
         // Corners shared between facets are merged back into six vertices in first-use order.
         Assert.Equal(6, read.Vertices.Length);
         Assert.Equal(mesh.TriangleCount, read.TriangleCount);
@@ -133,14 +133,14 @@ public class MeshFiles_RoundTrip
     }
 
     [Fact]
-    public void StlBinaryRoundTripsFloatCoordinates()
+    public void Stl_binary_round_trips_float_coordinates()
     {
-        Mesh mesh = MeshSamples.FloatExactSoup(200, 7);
+        var mesh = MeshSamples.FloatExactSoup(200, 7);
         using var stream = new MemoryStream();
         StlWriter.Write(mesh, stream, StlFormat.Binary);
         Assert.Equal(84 + 50 * 200, stream.Length);
         stream.Position = 0;
-        Mesh read = StlReader.Read(stream, "soup.stl");
+        var read = StlReader.Read(stream, "soup.stl");
         Assert.Equal(mesh.TriangleCount, read.TriangleCount);
         for (int i = 0; i < mesh.Indices.Length; i++)
         {
@@ -149,14 +149,14 @@ public class MeshFiles_RoundTrip
     }
 
     [Fact]
-    public void BinaryStlWhoseHeaderStartsWithSolidIsStillBinary()
+    public void Binary_stl_whose_header_starts_with_solid_is_still_binary()
     {
-        Mesh mesh = MeshSamples.FloatExactSoup(3, 8);
+        var mesh = MeshSamples.FloatExactSoup(3, 8);
         using var stream = new MemoryStream();
         StlWriter.Write(mesh, stream, StlFormat.Binary);
         byte[] bytes = stream.ToArray();
         "solid but binary"u8.CopyTo(bytes);
-        Mesh read = StlReader.Read(new MemoryStream(bytes), "tricky.stl");
+        var read = StlReader.Read(new MemoryStream(bytes), "tricky.stl");
         Assert.Equal(3, read.TriangleCount);
     }
 }

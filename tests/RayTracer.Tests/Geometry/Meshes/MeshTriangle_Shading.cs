@@ -7,18 +7,18 @@ namespace RayTracer.Tests.Geometry.Meshes;
 public class MeshTriangle_Shading
 {
     [Fact]
-    public void FlatTrianglesUseTheFaceNormalAndSmoothOnesInterpolate()
+    public void Flat_triangles_use_the_face_normal_and_smooth_ones_interpolate()
     {
-        Mesh mesh = MeshSamples.Octahedron(true);
-        MeshTriangle flat = mesh.CreateTriangles(smooth: false)[0]; // (1,0,0), (0,1,0), (0,0,1)
-        MeshTriangle smooth = mesh.CreateTriangles(smooth: true)[0];
+        var mesh = MeshSamples.Octahedron(true);
+        var flat = mesh.CreateTriangles(smooth: false)[0]; // (1,0,0), (0,1,0), (0,0,1)
+        var smooth = mesh.CreateTriangles(smooth: true)[0];
         var sr = new ShadingRecord(null);
         var centre = new Point3D(1.0 / 3, 1.0 / 3, 1.0 / 3);
         var ray = new Ray(new Point3D(2, 2, 2), centre - new Point3D(2, 2, 2));
 
         Assert.True(flat.Hit(ray, out double t, sr));
         Assert.Equal(1, t, 12);
-        Normal3D face = new Normal3D(1, 1, 1).Normalized();
+        var face = new Normal3D(1, 1, 1).Normalized();
         Assert.True((sr.Normal - face).Length < 1e-12);
 
         // Near a corner the smooth normal approaches that vertex's normal.
@@ -30,21 +30,21 @@ public class MeshTriangle_Shading
     }
 
     [Fact]
-    public void ComputedVertexNormalsOfTheOctahedronPointAlongTheVertices()
+    public void Computed_vertex_normals_of_the_octahedron_point_along_the_vertices()
     {
-        Mesh mesh = MeshSamples.Octahedron(false);
+        var mesh = MeshSamples.Octahedron(false);
         mesh.ComputeVertexNormals();
         for (int i = 0; i < mesh.Vertices.Length; i++)
         {
-            Point3D v = mesh.Vertices[i];
+            var v = mesh.Vertices[i];
             Assert.True((mesh.Normals![i] - new Normal3D(v.x, v.y, v.z)).Length < 1e-12);
         }
     }
 
     [Fact]
-    public void MeshRejectsIndicesOutsideItsVertices()
+    public void Mesh_rejects_indices_outside_its_vertices()
     {
-        Mesh mesh = MeshSamples.Octahedron(false);
+        var mesh = MeshSamples.Octahedron(false);
         Assert.Throws<ArgumentException>(() => new Mesh(mesh.Vertices, [0, 1, 9]));
         Assert.Throws<ArgumentException>(() => new Mesh(mesh.Vertices, [0, 1]));
     }

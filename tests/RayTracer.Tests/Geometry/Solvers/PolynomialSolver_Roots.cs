@@ -27,7 +27,7 @@ public class PolynomialSolver_Roots
     }
 
     [Fact]
-    public void QuarticWithFourDistinctRealRoots()
+    public void Quartic_with_four_distinct_real_roots()
     {
         var random = new SeededRandom(41);
         Span<double> roots = stackalloc double[4];
@@ -50,7 +50,7 @@ public class PolynomialSolver_Roots
     }
 
     [Fact]
-    public void QuarticWithTwoRealRootsAndAComplexPair()
+    public void Quartic_with_two_real_roots_and_a_complex_pair()
     {
         var random = new SeededRandom(42);
         Span<double> roots = stackalloc double[4];
@@ -78,7 +78,7 @@ public class PolynomialSolver_Roots
     }
 
     [Fact]
-    public void QuarticWithNoRealRoots()
+    public void Quartic_with_no_real_roots()
     {
         Span<double> roots = stackalloc double[4];
         // (x² + 1)(x² + 4)
@@ -86,7 +86,7 @@ public class PolynomialSolver_Roots
     }
 
     [Fact]
-    public void QuarticWithADoubleRootFindsIt()
+    public void Quartic_with_a_double_root_finds_it()
     {
         Span<double> roots = stackalloc double[4];
         double[] c = FromRoots(1, -2, 1, 1, 3);
@@ -98,7 +98,7 @@ public class PolynomialSolver_Roots
     }
 
     [Fact]
-    public void CubicWithKnownRoots()
+    public void Cubic_with_known_roots()
     {
         var random = new SeededRandom(43);
         Span<double> roots = stackalloc double[3];
@@ -120,7 +120,7 @@ public class PolynomialSolver_Roots
     }
 
     [Fact]
-    public void QuadraticIsAccurateWhenRootsDifferGreatlyInSize()
+    public void Quadratic_is_accurate_when_roots_differ_greatly_in_size()
     {
         Span<double> roots = stackalloc double[2];
         // Roots 1e-8 and 1e8: the naive formula loses the small one entirely.

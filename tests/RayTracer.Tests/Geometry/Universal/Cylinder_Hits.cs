@@ -12,14 +12,14 @@ public class Cylinder_Hits
 
     private static double Distance(Point3D p, out double h)
     {
-        Vector3D a = Axis.Normalized();
-        Vector3D rel = p - Base;
+        var a = Axis.Normalized();
+        var rel = p - Base;
         h = Vector3D.Dot(rel, a);
         return (rel - h * a).Length;
     }
 
     [Fact]
-    public void OpenCylinderInAnyOrientationAgreesWithBruteForce()
+    public void Open_cylinder_in_any_orientation_agrees_with_brute_force()
     {
         var cyl = new Cylinder(Base, Axis, 0.75);
         double F(Point3D p) => Distance(p, out _) - 0.75;
@@ -34,7 +34,7 @@ public class Cylinder_Hits
         int hits = 0;
         for (int n = 0; n < 300; n++)
         {
-            Ray ray = ImplicitSurfaceMarch.RandomRayTowards(random, 6, 2);
+            var ray = ImplicitSurfaceMarch.RandomRayTowards(random, 6, 2);
             ray.o += new Vector3D(1.5, 0, 3);
             double? expected = ImplicitSurfaceMarch.FirstRoot(F, ray, 20, 2e-3, Accept);
             bool hit = cyl.Hit(ray, out double t, sr);
@@ -52,10 +52,10 @@ public class Cylinder_Hits
     }
 
     [Fact]
-    public void CappedCylinderHitsTheCapAlongTheAxis()
+    public void Capped_cylinder_hits_the_cap_along_the_axis()
     {
         var cyl = new Cylinder(Base, Axis, 0.75, capped: true);
-        Vector3D a = Axis.Normalized();
+        var a = Axis.Normalized();
         var sr = new ShadingRecord(null);
         Assert.True(cyl.Hit(new Ray(Base - 2 * a, a), out double t, sr));
         Assert.Equal(2, t, 12);

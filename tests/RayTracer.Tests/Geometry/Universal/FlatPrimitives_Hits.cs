@@ -8,7 +8,7 @@ namespace RayTracer.Tests.Geometry.Universal;
 public class FlatPrimitives_Hits
 {
     [Fact]
-    public void PlaneHitIsAtTheAnalyticDistance()
+    public void Plane_hit_is_at_the_analytic_distance()
     {
         var plane = new Plane(new Point3D(0, 1, 0), new Normal3D(0, 2, 0));
         var sr = new ShadingRecord(null);
@@ -21,23 +21,23 @@ public class FlatPrimitives_Hits
     }
 
     [Fact]
-    public void DiskAcceptsPointsInsideTheRadiusOnly()
+    public void Disk_accepts_points_inside_the_radius_only()
     {
         var disk = new Disk(new Point3D(1, 1, 1), new Normal3D(1, 1, 1), 2);
-        Vector3D n = new Vector3D(1, 1, 1).Normalized();
-        OrthonormalBasis frame = OrthonormalBasis.FromW(n);
-        Point3D inside = new Point3D(1, 1, 1) + 1.999 * frame.U;
-        Point3D outside = new Point3D(1, 1, 1) + 2.001 * frame.V;
+        var n = new Vector3D(1, 1, 1).Normalized();
+        var frame = OrthonormalBasis.FromW(n);
+        var inside = new Point3D(1, 1, 1) + 1.999 * frame.U;
+        var outside = new Point3D(1, 1, 1) + 2.001 * frame.V;
         Assert.True(disk.Intersect(new Ray(inside + 3 * n, -n), out double t));
         Assert.Equal(3, t, 12);
         Assert.False(disk.Intersect(new Ray(outside + 3 * n, -n), out _));
-        Point3D sample = disk.Sample(new Point2D(0.999, 0.3));
+        var sample = disk.Sample(new Point2D(0.999, 0.3));
         Assert.Equal(0, Vector3D.Dot(sample - disk.Center, n), 12);
         Assert.True(sample.Distance(disk.Center) <= 2);
     }
 
     [Fact]
-    public void RectangleReportsParametricCoordinates()
+    public void Rectangle_reports_parametric_coordinates()
     {
         var rect = new Rectangle(new Point3D(0, 0, 0), new Vector3D(4, 0, 0), new Vector3D(0, 0, 2));
         var sr = new ShadingRecord(null);
@@ -52,7 +52,7 @@ public class FlatPrimitives_Hits
     }
 
     [Fact]
-    public void TriangleHitsMatchBarycentricConstruction()
+    public void Triangle_hits_match_barycentric_construction()
     {
         var random = new SeededRandom(61);
         var sr = new ShadingRecord(null);
@@ -61,8 +61,8 @@ public class FlatPrimitives_Hits
             Point3D a = RandomPoint(random), b = RandomPoint(random), c = RandomPoint(random);
             var tri = new Triangle(a, b, c);
             double beta = random.NextDouble(), gamma = random.NextDouble() * (1 - beta);
-            Point3D target = a + beta * (b - a) + gamma * (c - a);
-            Point3D origin = RandomPoint(random) + new Vector3D(0, 0, 20);
+            var target = a + beta * (b - a) + gamma * (c - a);
+            var origin = RandomPoint(random) + new Vector3D(0, 0, 20);
             var ray = new Ray(origin, target - origin);
             if (tri.Area < 1e-3)
             {
@@ -77,13 +77,13 @@ public class FlatPrimitives_Hits
             Assert.Equal(0, sr.Normal.Dot(c - a), 9);
 
             // Just outside edge bc (beta + gamma slightly above 1) misses.
-            Point3D beyond = a + 0.5005 * (b - a) + 0.5005 * (c - a);
+            var beyond = a + 0.5005 * (b - a) + 0.5005 * (c - a);
             Assert.False(tri.Intersect(new Ray(origin, beyond - origin), out _));
         }
     }
 
     [Fact]
-    public void BoxFacesAndInsideOrigins()
+    public void Box_faces_and_inside_origins()
     {
         var box = new Box(new Point3D(-1, -1, -1), new Point3D(1, 2, 3));
         var sr = new ShadingRecord(null);
@@ -98,14 +98,14 @@ public class FlatPrimitives_Hits
     }
 
     [Fact]
-    public void BoxAgreesWithBruteForceMarching()
+    public void Box_agrees_with_brute_force_marching()
     {
         var box = new Box(new Point3D(-1, -0.5, -2), new Point3D(1.5, 1, 1));
         static double F(Point3D p) => Math.Max(Math.Max(Math.Abs(p.x - 0.25) - 1.25, Math.Abs(p.y - 0.25) - 0.75), Math.Abs(p.z + 0.5) - 1.5);
         var random = new SeededRandom(62);
         for (int n = 0; n < 300; n++)
         {
-            Ray ray = ImplicitSurfaceMarch.RandomRayTowards(random, 6, 2.5);
+            var ray = ImplicitSurfaceMarch.RandomRayTowards(random, 6, 2.5);
             if (box.GetBoundingBox().Hit(ray, out double t0, out double t1) && t1 - Math.Max(t0, 0) < 0.01)
             {
                 continue; // a corner clipped by less than the marching step cannot be seen by marching

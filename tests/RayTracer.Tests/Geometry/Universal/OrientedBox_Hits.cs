@@ -11,7 +11,7 @@ namespace RayTracer.Tests.Geometry.Universal;
 public class OrientedBox_Hits
 {
     [Fact]
-    public void MatchesARotatedInstanceOfAnAxisAlignedBox()
+    public void Matches_a_rotated_instance_of_an_axis_aligned_box()
     {
         var rotation = AffineTransform.Rotation(new Vector3D(1, 1, 0.3), 0.9);
         var centre = new Point3D(2, -1, 3);
@@ -25,7 +25,7 @@ public class OrientedBox_Hits
         int hits = 0;
         for (int n = 0; n < 3000; n++)
         {
-            Ray ray = ImplicitSurfaceMarch.RandomRayTowards(random, n % 3 == 0 ? 1 : 6, 2);
+            var ray = ImplicitSurfaceMarch.RandomRayTowards(random, n % 3 == 0 ? 1 : 6, 2);
             ray.o += centre - Point3D.Origin;
             bool ho = oriented.Hit(ray, out double to, a);
             bool hi = instance.Hit(ray, out double ti, b);

@@ -10,7 +10,7 @@ public class Sphere_Hits
     private static readonly Sphere Unit = new(new Point3D(1, 2, 3), 2);
 
     [Fact]
-    public void HeadOnRayHitsAtDistanceMinusRadius()
+    public void Head_on_ray_hits_at_distance_minus_radius()
     {
         var sr = new ShadingRecord(null);
         Assert.True(Unit.Hit(new Ray(new Point3D(1, 2, 13), new Vector3D(0, 0, -1)), out double t, sr));
@@ -19,7 +19,7 @@ public class Sphere_Hits
     }
 
     [Fact]
-    public void RayFromInsideHitsTheFarSideWithOutwardNormal()
+    public void Ray_from_inside_hits_the_far_side_with_outward_normal()
     {
         var sr = new ShadingRecord(null);
         Assert.True(Unit.Hit(new Ray(new Point3D(1, 2, 3), new Vector3D(0, 2, 0)), out double t, sr));
@@ -28,7 +28,7 @@ public class Sphere_Hits
     }
 
     [Fact]
-    public void GrazingRaysHitJustInsideAndMissJustOutside()
+    public void Grazing_rays_hit_just_inside_and_miss_just_outside()
     {
         var origin = new Point3D(1, 2 + 2 - 1e-6, -10);
         Assert.True(Unit.Intersect(new Ray(origin, new Vector3D(0, 0, 1)), out double t));
@@ -37,20 +37,20 @@ public class Sphere_Hits
     }
 
     [Fact]
-    public void SphereBehindTheRayIsMissed()
+    public void Sphere_behind_the_ray_is_missed()
     {
         Assert.False(Unit.Intersect(new Ray(new Point3D(1, 2, 10), new Vector3D(0, 0, 1)), out _));
     }
 
     [Fact]
-    public void RandomHitsLieOnTheSurfaceWithUnitOutwardNormals()
+    public void Random_hits_lie_on_the_surface_with_unit_outward_normals()
     {
         var random = new SeededRandom(51);
         var sr = new ShadingRecord(null);
         int hits = 0;
         for (int n = 0; n < 2000; n++)
         {
-            Ray ray = ImplicitSurfaceMarch.RandomRayTowards(random, 8, 3);
+            var ray = ImplicitSurfaceMarch.RandomRayTowards(random, 8, 3);
             ray.o = ray.o + new Vector3D(1, 2, 3);
             if (!Unit.Hit(ray, out double t, sr))
             {
@@ -58,7 +58,7 @@ public class Sphere_Hits
             }
 
             hits++;
-            Point3D p = ray.At(t);
+            var p = ray.At(t);
             Assert.Equal(2, p.Distance(Unit.Center), 9);
             Assert.Equal(1, sr.Normal.Length, 12);
             Assert.True(sr.Normal.Dot(p - Unit.Center) > 0);
@@ -70,13 +70,13 @@ public class Sphere_Hits
     }
 
     [Fact]
-    public void SamplesLieOnTheSurfaceAndPdfIsOneOverArea()
+    public void Samples_lie_on_the_surface_and_pdf_is_one_over_area()
     {
         var random = new SeededRandom(52);
-        Vector3D mean = Vector3D.Zero;
+        var mean = Vector3D.Zero;
         for (int n = 0; n < 20_000; n++)
         {
-            Point3D p = Unit.Sample(new Point2D(random.NextDouble(), random.NextDouble()));
+            var p = Unit.Sample(new Point2D(random.NextDouble(), random.NextDouble()));
             Assert.Equal(2, p.Distance(Unit.Center), 12);
             mean += (p - Unit.Center) / 20_000;
         }
