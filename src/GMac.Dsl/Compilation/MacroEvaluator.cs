@@ -238,25 +238,9 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
     private T Apply(BoundScalarFunctionCall call, Context context)
     {
         var args = call.Arguments.Select(a => Scalar(a, context)).ToArray();
-        return call.Function switch
-        {
-            ScalarFunction.Pi => domain.Pi,
-            ScalarFunction.Sin => T.Sin(args[0]),
-            ScalarFunction.Cos => T.Cos(args[0]),
-            ScalarFunction.Tan => T.Tan(args[0]),
-            ScalarFunction.Asin => T.Asin(args[0]),
-            ScalarFunction.Acos => T.Acos(args[0]),
-            ScalarFunction.Atan => T.Atan(args[0]),
-            ScalarFunction.Atan2 => domain.Atan2(args[0], args[1]),
-            ScalarFunction.Sinh => T.Sinh(args[0]),
-            ScalarFunction.Cosh => T.Cosh(args[0]),
-            ScalarFunction.Tanh => T.Tanh(args[0]),
-            ScalarFunction.Sqrt => T.Sqrt(args[0]),
-            ScalarFunction.Exp => domain.Exp(args[0]),
-            ScalarFunction.Log => domain.Log(args[0]),
-            ScalarFunction.Abs => T.Abs(args[0]),
-            _ => throw new MacroEvaluationException(call.Span, $"unknown function {call.Function}"),
-        };
+        return ScalarFunctions.TryApply(call.Function, args, domain, out var value)
+            ? value
+            : throw new MacroEvaluationException(call.Span, $"unknown function {call.Function}");
     }
 
     private Value Unary(BoundUnaryOperation u, Context context, Frame? frame)

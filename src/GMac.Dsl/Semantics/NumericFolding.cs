@@ -1,3 +1,5 @@
+using GMac.Dsl.Compilation;
+
 namespace GMac.Dsl.Semantics;
 
 /// <summary>
@@ -36,30 +38,10 @@ internal static class NumericFolding
                     if (TryEvaluate(call.Arguments[i]) is not { } a) return null;
                     args[i] = a;
                 }
-                return Apply(call.Function, args);
+                return ScalarFunctions.TryApply(call.Function, args, DoubleDomain.Instance, out var value) ? value : null;
             }
             default:
                 return null;
         }
     }
-
-    private static double Apply(ScalarFunction function, double[] a) => function switch
-    {
-        ScalarFunction.Pi => Math.PI,
-        ScalarFunction.Sin => Math.Sin(a[0]),
-        ScalarFunction.Cos => Math.Cos(a[0]),
-        ScalarFunction.Tan => Math.Tan(a[0]),
-        ScalarFunction.Asin => Math.Asin(a[0]),
-        ScalarFunction.Acos => Math.Acos(a[0]),
-        ScalarFunction.Atan => Math.Atan(a[0]),
-        ScalarFunction.Atan2 => Math.Atan2(a[0], a[1]),
-        ScalarFunction.Sinh => Math.Sinh(a[0]),
-        ScalarFunction.Cosh => Math.Cosh(a[0]),
-        ScalarFunction.Tanh => Math.Tanh(a[0]),
-        ScalarFunction.Sqrt => Math.Sqrt(a[0]),
-        ScalarFunction.Exp => Math.Exp(a[0]),
-        ScalarFunction.Log => Math.Log(a[0]),
-        ScalarFunction.Abs => Math.Abs(a[0]),
-        _ => double.NaN,
-    };
 }
