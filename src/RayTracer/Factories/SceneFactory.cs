@@ -52,6 +52,9 @@ public static class SceneFactory
         () => new TransformedTexturesScene(),
         () => new TwisterCylindersScene(),
         () => new TwisterCurvesScene(),
+        () => new TwisterHelixesScene(),
+        () => new TwisterEpitrochoidsScene(),
+        () => new TwisterRoulettesScene(),
     ];
 
     /// <summary>Fresh instances of every scene, in listing order.</summary>

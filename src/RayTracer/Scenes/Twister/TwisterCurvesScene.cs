@@ -1,5 +1,3 @@
-using RayTracer.Geometry.Compound;
-using RayTracer.Geometry.Parametric;
 using RayTracer.Maths;
 using Twister;
 
@@ -19,7 +17,7 @@ public sealed class TwisterCurvesScene : TwisterGallery
 
     protected override void Populate(World world)
     {
-        AddStage(world, -2.4, -1.5);
+        AddFaceOnStudio(world, -2.4);
         Place(world, 0, 0, Pentagram());
         Place(world, 1, 0, [TwistCurves.Circle(default, 1)]);
         Place(world, 2, 0, ConcentricArcs());
@@ -27,21 +25,11 @@ public sealed class TwisterCurvesScene : TwisterGallery
         Place(world, 1, 1, ArcWave());
         Place(world, 2, 1, TurnedCircles());
 
-        AddLights(world, new Point3D(-2.5, 4, 14));
         SetCamera(world, new Point3D(0, 0.6, 10), new Point3D(0, -0.05, 0), 45);
     }
 
-    /// <summary>The curves of one cell, each its own tube and colour, centred on the cell together.</summary>
-    private static void Place(World world, int column, int row, IReadOnlyList<TwistCurve> curves)
-    {
-        var group = new CompoundObject();
-        for (var i = 0; i < curves.Count; i++)
-        {
-            group.Add(new CurveTube(curves[i], TubeRadius, TubeRadius / 5) { Material = PaletteMaterial(column + 3 * row + i) });
-        }
-
-        world.Add(CentredAt(group, new Point3D((column - 1) * Cell, (0.5 - row) * Cell, 0)));
-    }
+    private static void Place(World world, int column, int row, IReadOnlyList<TwistCurve> curves) =>
+        AddFaceOn(world, curves, TubeRadius, column + 3 * row, column, row, 3, 2, Cell);
 
     private static TwistCurve[] Pentagram()
     {

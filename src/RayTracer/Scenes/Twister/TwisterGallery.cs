@@ -1,6 +1,7 @@
 using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry;
+using RayTracer.Geometry.Compound;
 using RayTracer.Geometry.Parametric;
 using RayTracer.Geometry.Universal;
 using RayTracer.Lights;
@@ -34,7 +35,7 @@ public abstract class TwisterGallery : SceneDescription
     ];
 
     protected static readonly RGBColor Background = new(0.14, 0.15, 0.18);
-    protected static readonly RGBColor StageColor = new(0.62, 0.60, 0.56);
+    protected static readonly RGBColor StageColor = new(0.70, 0.68, 0.64);
 
     /// <summary>Plastic in the palette's <paramref name="index"/>th colour (wrapping), lit alike on both faces.</summary>
     protected static Material PaletteMaterial(int index) =>
@@ -42,6 +43,24 @@ public abstract class TwisterGallery : SceneDescription
 
     /// <summary>A tube of <paramref name="radius"/> around the curve; the axis strays from the curve by at most a fifth of the radius.</summary>
     protected static CurveTube Tube(IParametricCurve curve, double radius) => new(curve, radius, radius / 5);
+
+    /// <summary>
+    /// Adds plane curves face on, as tubes in the palette's colours from <paramref name="colour"/>, centred
+    /// together in the cell (<paramref name="column"/>, <paramref name="row"/>) of a grid of square cells
+    /// of side <paramref name="cell"/> centred on the origin of the plane z = 0; row 0 is the top.
+    /// </summary>
+    protected static void AddFaceOn(World world, IReadOnlyList<IParametricCurve> curves, double tubeRadius, int colour,
+        int column, int row, int columns, int rows, double cell)
+    {
+        var group = new CompoundObject();
+        for (var i = 0; i < curves.Count; i++)
+        {
+            group.Add(new CurveTube(curves[i], tubeRadius, tubeRadius / 5) { Material = PaletteMaterial(colour + i) });
+        }
+
+        var centre = new Point3D((column - (columns - 1) / 2.0) * cell, ((rows - 1) / 2.0 - row) * cell, 0);
+        world.Add(CentredAt(group, centre));
+    }
 
     /// <summary>Twister's z axis turned to the ray tracer's y axis.</summary>
     protected static Instance Upright(GeometricObject shape) => new Instance(shape).RotateX(-Math.PI / 2);
@@ -74,6 +93,16 @@ public abstract class TwisterGallery : SceneDescription
         {
             world.Add(new Plane(new Point3D(0, 0, z), new Normal3D(0, 0, 1)) { Material = MaterialFactory.Matte(StageColor * 0.9, 0.3, 0.7) });
         }
+    }
+
+    /// <summary>
+    /// The studio for plane curves shown face on at z = 0: a backdrop close behind and a key light near
+    /// the camera's line of sight, so each curve throws a small drop shadow that does not tangle with it.
+    /// </summary>
+    protected static void AddFaceOnStudio(World world, double groundY)
+    {
+        AddStage(world, groundY, -0.8);
+        AddLights(world, new Point3D(-1.2, 2.5, 16));
     }
 
     /// <summary>A key light above and to the left of the camera (shadows) and a fill from the right (none).</summary>
