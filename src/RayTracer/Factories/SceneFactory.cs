@@ -55,6 +55,7 @@ public static class SceneFactory
         () => new TwisterHelixesScene(),
         () => new TwisterEpitrochoidsScene(),
         () => new TwisterRoulettesScene(),
+        () => new TwisterSurfacesScene(),
     ];
 
     /// <summary>Fresh instances of every scene, in listing order.</summary>
