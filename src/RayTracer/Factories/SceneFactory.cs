@@ -7,6 +7,7 @@ using RayTracer.Scenes.Primitives;
 using RayTracer.Scenes.Showcase;
 using RayTracer.Scenes.Surfaces;
 using RayTracer.Scenes.Texturing;
+using RayTracer.Scenes.Twister;
 
 namespace RayTracer.Factories;
 
@@ -49,6 +50,12 @@ public static class SceneFactory
         () => new NoiseTexturesScene(),
         () => new MarbleWoodScene(),
         () => new TransformedTexturesScene(),
+        () => new TwisterCylindersScene(),
+        () => new TwisterCurvesScene(),
+        () => new TwisterHelixesScene(),
+        () => new TwisterEpitrochoidsScene(),
+        () => new TwisterRoulettesScene(),
+        () => new TwisterSurfacesScene(),
     ];
 
     /// <summary>Fresh instances of every scene, in listing order.</summary>
