@@ -1,14 +1,20 @@
 namespace Twister.Tessellation;
 
 /// <summary>
-/// One run of <see cref="SurfaceTessellator"/>. Faces are rectangles of the parameter grid, halved in
-/// u, in v or both as their flatness asks; vertices sit at dyadic parameters, keyed by integer coordinates so that a sample made by
-/// one face is found by every face whose edge passes through it.
+/// One run of <see cref="SurfaceTessellator"/>. Faces are rectangles of the parameter grid, cut in u,
+/// in v or both as their flatness asks; vertices sit on a fine integer grid, so a sample made by one
+/// face is found exactly by every face whose side passes through it.
 /// </summary>
 internal sealed class SurfaceTessellation
 {
-    /// <summary>Halvings available below a starting cell: parameters are multiples of 1 / (cells · 2^Levels).</summary>
-    private const int Levels = 30;
+    /// <summary>
+    /// Grid steps across a starting cell: 2^20 · 3^6 · 5^2 · 7^2, so a cell can be cut into 2 to 8 equal
+    /// parts many times over and every vertex still sits exactly on the grid.
+    /// </summary>
+    private const long CellSteps = (1L << 20) * 729 * 25 * 49;
+
+    /// <summary>The most parts a cell is cut into at once along one direction.</summary>
+    private const int MaxParts = 8;
 
     /// <summary>
     /// When the iso-curves of a cell stray less than this share of its interior gap, the gap comes from
@@ -21,6 +27,7 @@ internal sealed class SurfaceTessellation
     private readonly MeshBuilder _mesh;
     private readonly long _resolution;
     private readonly Dictionary<(long I, long J), int> _vertices = [];
+    private readonly GridLines _lines = new();
     private readonly List<(long I, long J, long Du, long Dv)> _leaves = [];
     private Seams _seams = new(1);
     private FlatnessProbe _probe = null!;
@@ -30,7 +37,7 @@ internal sealed class SurfaceTessellation
         _sampler = new SurfaceSampler(surface);
         _options = options;
         _mesh = new MeshBuilder(options);
-        _resolution = (long)options.InitialCells << Levels;
+        _resolution = options.InitialCells * CellSteps;
     }
 
     public TriangleMesh Run()
@@ -38,7 +45,7 @@ internal sealed class SurfaceTessellation
         _seams = SeamDetector.Detect(_sampler, _options.InitialCells, new ProbeRandom(_options.Seed));
         _sampler.NormalScale = _seams.NormalScale;
         _probe = new FlatnessProbe(_sampler, _options, _seams, _resolution);
-        var size = 1L << Levels;
+        var size = CellSteps;
         for (var i = 0; i < _options.InitialCells; i++)
         {
             for (var j = 0; j < _options.InitialCells; j++)
@@ -47,6 +54,7 @@ internal sealed class SurfaceTessellation
             }
         }
 
+        _lines.Freeze();
         var boundary = new List<BoundaryVertex>(8);
         foreach (var (i, j, du, dv) in _leaves)
         {
@@ -57,11 +65,11 @@ internal sealed class SurfaceTessellation
     }
 
     /// <summary>
-    /// Keeps the cell whole or halves it across the direction that is not flat: in u where a curve along
-    /// u (its bottom or top edge) strays from its chord, in v where a curve along v does. A cell whose
-    /// edges are flat but whose interior is not is halved across the direction whose edges and middle
-    /// iso-curve stray most, or both ways when they hardly stray at all (a twist). So a surface curved more one way than the other gets long thin
-    /// cells along its flatter direction rather than squares.
+    /// Keeps the cell whole or cuts it across the direction that is not flat: in u where a curve along u
+    /// (its bottom or top edge) strays from its chord, in v where a curve along v does. A cell whose
+    /// edges are flat but whose interior is not is cut across the direction whose edges and middle
+    /// iso-curve stray most, or both ways when they hardly stray at all (a twist). So a surface curved
+    /// more one way than the other gets long thin cells along its flatter direction, not squares.
     /// </summary>
     private void Refine(long i, long j, long du, long dv)
     {
@@ -79,51 +87,65 @@ internal sealed class SurfaceTessellation
                 return;
             }
 
-            // The gaps of the two directions add up inside; halving the one that contributes more
-            // is often enough, and a finer step than halving both.
-            alongU = Math.Max(alongU, dv < 2 ? 0 : MiddleError(i, j + dv / 2, i + du, j + dv / 2));
-            alongV = Math.Max(alongV, du < 2 ? 0 : MiddleError(i + du / 2, j, i + du / 2, j + dv));
+            // The gaps of the two directions add up inside; cutting across the one that contributes
+            // more is often enough, and a finer step than cutting both.
+            alongU = Math.Max(alongU, MiddleError(i, j + dv / 2, i + du, j + dv / 2));
+            alongV = Math.Max(alongV, MiddleError(i + du / 2, j, i + du / 2, j + dv));
             var twisted = Math.Max(alongU, alongV) < TwistShare * inside;
             splitU = twisted || alongU >= alongV;
             splitV = twisted || alongV > alongU;
         }
 
-        if ((splitU && du < 2) || (splitV && dv < 2))
+        // Where one direction is cut alone, the other keeps its gap and this one gets the rest.
+        var ku = splitU ? Parts(du, alongU, splitV ? 0.5 * limit : Math.Max(limit - alongV, 0.25 * limit), i, j) : 1;
+        var kv = splitV ? Parts(dv, alongV, splitU ? 0.5 * limit : Math.Max(limit - alongU, 0.25 * limit), i, j) : 1;
+        long su = du / ku, sv = dv / kv;
+        for (var x = 0; x <= ku; x++)
         {
-            var p = _probe.Parameter(i, j);
-            throw new TessellationException(FormattableString.Invariant(
-                $"The surface does not flatten to tolerance {_options.Tolerance} near (u, v) = ({p.U}, {p.V}): it may have a crease or a jump there, or the tolerance is below its rounding noise."));
+            for (var y = 0; y <= kv; y++)
+            {
+                Vertex(i + x * su, j + y * sv);
+            }
         }
 
-        // Each split makes the midpoints of the edges it cuts (and the centre when it cuts both ways),
-        // so the samples on any edge are the corners of a halving of it; AddInterior relies on it.
-        long hu = du / 2, hv = dv / 2;
-        if (splitU && splitV)
+        for (var x = 0; x < ku; x++)
         {
-            Vertex(i + hu, j);
-            Vertex(i + du, j + hv);
-            Vertex(i + hu, j + dv);
-            Vertex(i, j + hv);
-            Vertex(i + hu, j + hv);
-            Refine(i, j, hu, hv);
-            Refine(i + hu, j, hu, hv);
-            Refine(i + hu, j + hv, hu, hv);
-            Refine(i, j + hv, hu, hv);
+            for (var y = 0; y < kv; y++)
+            {
+                Refine(i + x * su, j + y * sv, su, sv);
+            }
         }
-        else if (splitU)
+    }
+
+    /// <summary>
+    /// How many equal parts to cut a side of <paramref name="steps"/> grid steps into. A chord's gap
+    /// shrinks with the square of its length, so a side whose gap is within a few times of the target
+    /// is cut at once into as many parts as that predicts; a rougher one is halved and looked at again,
+    /// since its gap may sit in one small part of it. The parts must divide the side exactly.
+    /// </summary>
+    private long Parts(long steps, double error, double target, long i, long j)
+    {
+        var wanted = Math.Sqrt(error / target);
+        var parts = wanted > MaxParts ? 2 : Math.Max(2, (int)Math.Ceiling(wanted));
+        for (var k = parts; k <= MaxParts; k++)
         {
-            Vertex(i + hu, j);
-            Vertex(i + hu, j + dv);
-            Refine(i, j, hu, dv);
-            Refine(i + hu, j, hu, dv);
+            if (steps % k == 0)
+            {
+                return k;
+            }
         }
-        else
+
+        for (var k = parts - 1; k >= 2; k--)
         {
-            Vertex(i, j + hv);
-            Vertex(i + du, j + hv);
-            Refine(i, j, du, hv);
-            Refine(i, j + hv, du, hv);
+            if (steps % k == 0)
+            {
+                return k;
+            }
         }
+
+        var p = _probe.Parameter(i, j);
+        throw new TessellationException(FormattableString.Invariant(
+            $"The surface does not flatten to tolerance {_options.Tolerance} near (u, v) = ({p.U}, {p.V}): it may have a crease or a jump there, or the tolerance is below its rounding noise."));
     }
 
     /// <summary>An iso-curve through the middle of a cell; its end points need not be vertices yet.</summary>
@@ -149,20 +171,7 @@ internal sealed class SurfaceTessellation
     private void AddBoundary(List<BoundaryVertex> boundary, long i0, long j0, long i1, long j1)
     {
         boundary.Add(new(_vertices[(i0, j0)], i0, j0));
-        AddInterior(boundary, i0, j0, i1, j1);
-    }
-
-    private void AddInterior(List<BoundaryVertex> boundary, long i0, long j0, long i1, long j1)
-    {
-        long mi = (i0 + i1) / 2, mj = (j0 + j1) / 2;
-        if ((Math.Abs(i1 - i0) < 2 && Math.Abs(j1 - j0) < 2) || !_vertices.TryGetValue((mi, mj), out var mid))
-        {
-            return;
-        }
-
-        AddInterior(boundary, i0, j0, mi, mj);
-        boundary.Add(new(mid, mi, mj));
-        AddInterior(boundary, mi, mj, i1, j1);
+        _lines.Between(i0, j0, i1, j1, boundary);
     }
 
     /// <summary>
@@ -190,7 +199,7 @@ internal sealed class SurfaceTessellation
             id = (i, j) == corner
                 ? _mesh.Add(p, _sampler.Point(p.U, p.V), PoleNormal(i, j))
                 : _mesh.AddCopy(p, Vertex(corner.I, corner.J));
-            _vertices[(i, j)] = id;
+            Remember(i, j, id);
             return id;
         }
 
@@ -204,12 +213,12 @@ internal sealed class SurfaceTessellation
             }
 
             id = _mesh.AddCopy(p, original);
-            _vertices[(i, j)] = id;
+            Remember(i, j, id);
             return id;
         }
 
         id = _mesh.Add(p, _sampler.Point(p.U, p.V), _sampler.UnitNormal(p.U, p.V));
-        _vertices[(i, j)] = id;
+        Remember(i, j, id);
         if (_seams.ClosedU && i == 0)
         {
             Vertex(m, j);
@@ -221,6 +230,12 @@ internal sealed class SurfaceTessellation
         }
 
         return id;
+    }
+
+    private void Remember(long i, long j, int id)
+    {
+        _vertices[(i, j)] = id;
+        _lines.Add(i, j, id);
     }
 
     /// <summary>The normal at a pole: the average of the normals just off the pole all around it.</summary>
