@@ -69,6 +69,11 @@ internal sealed class FlatnessProbe(SurfaceSampler sampler, TessellationOptions 
         var worst = 0.0;
         foreach (var (a, b, c) in triangles)
         {
+            if (Geometry3.Distance(corners[a], corners[b]) == 0 || Geometry3.Distance(corners[b], corners[c]) == 0 || Geometry3.Distance(corners[c], corners[a]) == 0)
+            {
+                continue; // two corners on a pole: the mesh drops this triangle, and its region is the other one's
+            }
+
             worst = Math.Max(worst, ProbeTriangle(at[a], at[b], at[c], corners[a], corners[b], corners[c], random));
         }
 

@@ -18,7 +18,7 @@ internal sealed class SurfaceTessellation
 
     /// <summary>
     /// When the iso-curves of a cell stray less than this share of its interior gap, the gap comes from
-    /// a twist (as in z = uv) that halving one direction barely helps, so the cell is halved both ways.
+    /// a twist (as in z = uv), which shrinks only in proportion to a side's length.
     /// </summary>
     private const double TwistShare = 0.25;
 
@@ -78,7 +78,14 @@ internal sealed class SurfaceTessellation
         var alongV = Math.Max(_probe.EdgeError(i, j, i, j + dv, a, d), _probe.EdgeError(i + du, j, i + du, j + dv, b, c));
         var limit = _probe.Limit;
         bool splitU = alongU > limit, splitV = alongV > limit;
-        if (!splitU && !splitV)
+        long ku = 1, kv = 1;
+        if (splitU || splitV)
+        {
+            // Where one direction is cut alone, the other keeps its gap and this one gets the rest.
+            ku = splitU ? Parts(du, Squared(alongU, splitV ? 0.5 * limit : Math.Max(limit - alongV, 0.25 * limit)), i, j) : 1;
+            kv = splitV ? Parts(dv, Squared(alongV, splitU ? 0.5 * limit : Math.Max(limit - alongU, 0.25 * limit)), i, j) : 1;
+        }
+        else
         {
             var inside = _probe.InteriorError(i, j, du, dv, [a, b, c, d]);
             if (inside <= limit)
@@ -87,18 +94,24 @@ internal sealed class SurfaceTessellation
                 return;
             }
 
-            // The gaps of the two directions add up inside; cutting across the one that contributes
-            // more is often enough, and a finer step than cutting both.
+            // The gaps of the two directions add up inside, so cutting across the one that contributes
+            // more is often enough, and a finer step than cutting both. When the iso-curves hardly
+            // stray, the gap comes from a twist (as in z = uv, or the shear near a pole), which falls
+            // in proportion to the length of either side, so one direction is cut then too.
             alongU = Math.Max(alongU, MiddleError(i, j + dv / 2, i + du, j + dv / 2));
             alongV = Math.Max(alongV, MiddleError(i + du / 2, j, i + du / 2, j + dv));
-            var twisted = Math.Max(alongU, alongV) < TwistShare * inside;
-            splitU = twisted || alongU >= alongV;
-            splitV = twisted || alongV > alongU;
+            var twisted = alongU + alongV < TwistShare * inside;
+            var wanted = twisted ? inside / limit : Squared(Math.Max(alongU, alongV), Math.Max(limit - Math.Min(alongU, alongV), 0.25 * limit));
+            if (alongU >= alongV)
+            {
+                ku = Parts(du, wanted, i, j);
+            }
+            else
+            {
+                kv = Parts(dv, wanted, i, j);
+            }
         }
 
-        // Where one direction is cut alone, the other keeps its gap and this one gets the rest.
-        var ku = splitU ? Parts(du, alongU, splitV ? 0.5 * limit : Math.Max(limit - alongV, 0.25 * limit), i, j) : 1;
-        var kv = splitV ? Parts(dv, alongV, splitU ? 0.5 * limit : Math.Max(limit - alongU, 0.25 * limit), i, j) : 1;
         long su = du / ku, sv = dv / kv;
         for (var x = 0; x <= ku; x++)
         {
@@ -118,14 +131,13 @@ internal sealed class SurfaceTessellation
     }
 
     /// <summary>
-    /// How many equal parts to cut a side of <paramref name="steps"/> grid steps into. A chord's gap
-    /// shrinks with the square of its length, so a side whose gap is within a few times of the target
-    /// is cut at once into as many parts as that predicts; a rougher one is halved and looked at again,
-    /// since its gap may sit in one small part of it. The parts must divide the side exactly.
+    /// How many equal parts to cut a side of <paramref name="steps"/> grid steps into, given how many
+    /// the gap predicts. A side that wants a few parts is cut at once into that many; a rougher one is
+    /// halved and looked at again, since its gap may sit in one small part of it. The parts must divide
+    /// the side exactly.
     /// </summary>
-    private long Parts(long steps, double error, double target, long i, long j)
+    private long Parts(long steps, double wanted, long i, long j)
     {
-        var wanted = Math.Sqrt(error / target);
         var parts = wanted > MaxParts ? 2 : Math.Max(2, (int)Math.Ceiling(wanted));
         for (var k = parts; k <= MaxParts; k++)
         {
@@ -147,6 +159,9 @@ internal sealed class SurfaceTessellation
         throw new TessellationException(FormattableString.Invariant(
             $"The surface does not flatten to tolerance {_options.Tolerance} near (u, v) = ({p.U}, {p.V}): it may have a crease or a jump there, or the tolerance is below its rounding noise."));
     }
+
+    /// <summary>Parts a curve needs to bring its gap to the target: a chord's gap shrinks with the square of its length.</summary>
+    private static double Squared(double error, double target) => Math.Sqrt(error / target);
 
     /// <summary>An iso-curve through the middle of a cell; its end points need not be vertices yet.</summary>
     private double MiddleError(long i0, long j0, long i1, long j1)
