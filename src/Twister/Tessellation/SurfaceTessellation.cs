@@ -1,208 +1,193 @@
 namespace Twister.Tessellation;
 
 /// <summary>
-/// One run of <see cref="SurfaceTessellator"/>. Faces are squares of the parameter grid, refined as a
-/// quadtree; vertices sit at dyadic parameters, keyed by integer coordinates so that a sample made by
-/// one face is found by every face whose edge passes through it.
+/// One run of <see cref="SurfaceTessellator"/>. Faces are rectangles of the parameter grid, cut in u,
+/// in v or both as their flatness asks; vertices sit on a fine integer grid, so a sample made by one
+/// face is found exactly by every face whose side passes through it.
 /// </summary>
 internal sealed class SurfaceTessellation
 {
-    /// <summary>Halvings available below a starting cell: parameters are multiples of 1 / (cells · 2^Levels).</summary>
-    private const int Levels = 30;
+    /// <summary>
+    /// Grid steps across a starting cell: 2^20 · 3^6 · 5^2 · 7^2, so a cell can be cut into 2 to 8 equal
+    /// parts many times over and every vertex still sits exactly on the grid.
+    /// </summary>
+    private const long CellSteps = (1L << 20) * 729 * 25 * 49;
+
+    /// <summary>The most parts a cell is cut into at once along one direction.</summary>
+    private const int MaxParts = 8;
+
+    /// <summary>
+    /// When the iso-curves of a cell stray less than this share of its interior gap, the gap comes from
+    /// a twist (as in z = uv), which shrinks only in proportion to a side's length.
+    /// </summary>
+    private const double TwistShare = 0.25;
 
     private readonly SurfaceSampler _sampler;
     private readonly TessellationOptions _options;
     private readonly MeshBuilder _mesh;
-    private readonly ProbeRandom _random;
-    private readonly double _limit;
     private readonly long _resolution;
     private readonly Dictionary<(long I, long J), int> _vertices = [];
-    private readonly List<(long I, long J, long Size)> _leaves = [];
+    private readonly GridLines _lines = new();
+    private readonly List<(long I, long J, long Du, long Dv)> _leaves = [];
     private Seams _seams = new(1);
+    private FlatnessProbe _probe = null!;
 
     public SurfaceTessellation(IParametricSurface surface, TessellationOptions options)
     {
         _sampler = new SurfaceSampler(surface);
         _options = options;
         _mesh = new MeshBuilder(options);
-        _random = new ProbeRandom(options.Seed);
-        _limit = Acceptance.Fraction * options.Tolerance;
-        _resolution = (long)options.InitialCells << Levels;
+        _resolution = options.InitialCells * CellSteps;
     }
 
     public TriangleMesh Run()
     {
-        _seams = SeamDetector.Detect(_sampler, _options.InitialCells, _random);
+        _seams = SeamDetector.Detect(_sampler, _options.InitialCells, new ProbeRandom(_options.Seed));
         _sampler.NormalScale = _seams.NormalScale;
-        var size = 1L << Levels;
+        _probe = new FlatnessProbe(_sampler, _options, _seams, _resolution);
+        var size = CellSteps;
         for (var i = 0; i < _options.InitialCells; i++)
         {
             for (var j = 0; j < _options.InitialCells; j++)
             {
-                Refine(i * size, j * size, size);
+                Refine(i * size, j * size, size, size);
             }
         }
 
-        foreach (var (i, j, s) in _leaves)
+        _lines.Freeze();
+        var boundary = new List<BoundaryVertex>(8);
+        foreach (var (i, j, du, dv) in _leaves)
         {
-            Triangulate(i, j, s);
+            Triangulate(i, j, du, dv, boundary);
         }
 
         return _mesh.Build();
     }
 
-    private void Refine(long i, long j, long size)
+    /// <summary>
+    /// Keeps the cell whole or cuts it across the direction that is not flat: in u where a curve along u
+    /// (its bottom or top edge) strays from its chord, in v where a curve along v does. A cell whose
+    /// edges are flat but whose interior is not is cut across the direction whose edges and middle
+    /// iso-curve stray most, or both ways when they hardly stray at all (a twist). So a surface curved
+    /// more one way than the other gets long thin cells along its flatter direction, not squares.
+    /// </summary>
+    private void Refine(long i, long j, long du, long dv)
     {
-        if (FaceIsFlat(i, j, size))
+        TwistablePoint a = Point(i, j), b = Point(i + du, j), c = Point(i + du, j + dv), d = Point(i, j + dv);
+        var alongU = Math.Max(_probe.EdgeError(i, j, i + du, j, a, b), _probe.EdgeError(i, j + dv, i + du, j + dv, d, c));
+        var alongV = Math.Max(_probe.EdgeError(i, j, i, j + dv, a, d), _probe.EdgeError(i + du, j, i + du, j + dv, b, c));
+        var limit = _probe.Limit;
+        bool splitU = alongU > limit, splitV = alongV > limit;
+        long ku = 1, kv = 1;
+        if (splitU || splitV)
         {
-            _leaves.Add((i, j, size));
-            return;
+            // Where one direction is cut alone, the other keeps its gap and this one gets the rest.
+            ku = splitU ? Parts(du, Squared(alongU, splitV ? 0.5 * limit : Math.Max(limit - alongV, 0.25 * limit)), i, j) : 1;
+            kv = splitV ? Parts(dv, Squared(alongV, splitU ? 0.5 * limit : Math.Max(limit - alongU, 0.25 * limit)), i, j) : 1;
+        }
+        else
+        {
+            var inside = _probe.InteriorError(i, j, du, dv, [a, b, c, d]);
+            if (inside <= limit)
+            {
+                _leaves.Add((i, j, du, dv));
+                return;
+            }
+
+            // The gaps of the two directions add up inside, so cutting across the one that contributes
+            // more is often enough, and a finer step than cutting both. When the iso-curves hardly
+            // stray, the gap comes from a twist (as in z = uv, or the shear near a pole), which falls
+            // in proportion to the length of either side, so one direction is cut then too.
+            alongU = Math.Max(alongU, MiddleError(i, j + dv / 2, i + du, j + dv / 2));
+            alongV = Math.Max(alongV, MiddleError(i + du / 2, j, i + du / 2, j + dv));
+            var twisted = alongU + alongV < TwistShare * inside;
+            var wanted = twisted ? inside / limit : Squared(Math.Max(alongU, alongV), Math.Max(limit - Math.Min(alongU, alongV), 0.25 * limit));
+            if (alongU >= alongV)
+            {
+                ku = Parts(du, wanted, i, j);
+            }
+            else
+            {
+                kv = Parts(dv, wanted, i, j);
+            }
         }
 
-        if (size == 1)
+        long su = du / ku, sv = dv / kv;
+        for (var x = 0; x <= ku; x++)
         {
-            throw new TessellationException(FormattableString.Invariant(
-                $"The surface does not flatten to tolerance {_options.Tolerance} near (u, v) = ({Parameter(i, j).U}, {Parameter(i, j).V}): it may have a crease or a jump there, or the tolerance is below its rounding noise."));
+            for (var y = 0; y <= kv; y++)
+            {
+                Vertex(i + x * su, j + y * sv);
+            }
         }
 
-        // Every split makes the midpoints of all four edges, so a sample inside an edge always comes
-        // with the midpoint of that edge; BoundaryOf relies on it.
-        var h = size / 2;
-        Vertex(i + h, j);
-        Vertex(i + size, j + h);
-        Vertex(i + h, j + size);
-        Vertex(i, j + h);
-        Vertex(i + h, j + h);
-        Refine(i, j, h);
-        Refine(i + h, j, h);
-        Refine(i + h, j + h, h);
-        Refine(i, j + h, h);
+        for (var x = 0; x < ku; x++)
+        {
+            for (var y = 0; y < kv; y++)
+            {
+                Refine(i + x * su, j + y * sv, su, sv);
+            }
+        }
     }
 
     /// <summary>
-    /// Whether the face may stay whole: each edge is within the tolerance of its chord (probed as a
-    /// curve), and the interior is within the tolerance both of the two triangles cut along the
-    /// diagonal and of the four triangles fanned from the centre, the two ways a leaf is triangulated.
+    /// How many equal parts to cut a side of <paramref name="steps"/> grid steps into, given how many
+    /// the gap predicts. A side that wants a few parts is cut at once into that many; a rougher one is
+    /// halved and looked at again, since its gap may sit in one small part of it. The parts must divide
+    /// the side exactly.
     /// </summary>
-    private bool FaceIsFlat(long i, long j, long size)
+    private long Parts(long steps, double wanted, long i, long j)
     {
-        int a = Vertex(i, j), b = Vertex(i + size, j), c = Vertex(i + size, j + size), d = Vertex(i, j + size);
-        if (!EdgeIsFlat(a, b) || !EdgeIsFlat(b, c) || !EdgeIsFlat(c, d) || !EdgeIsFlat(d, a)
-            || !TriangleIsFlat(a, b, c) || !TriangleIsFlat(a, c, d))
+        var parts = wanted > MaxParts ? 2 : Math.Max(2, (int)Math.Ceiling(wanted));
+        for (var k = parts; k <= MaxParts; k++)
         {
-            return false;
-        }
-
-        var g = Parameter(i + size / 2, j + size / 2);
-        var centre = _sampler.Point(g.U, g.V);
-        foreach (var (p, q) in new[] { (a, b), (b, c), (c, d), (d, a) })
-        {
-            SurfaceParameter pp = _mesh.Parameter(p), pq = _mesh.Parameter(q);
-            var onSurface = _sampler.Point((g.U + pp.U + pq.U) / 3, (g.V + pp.V + pq.V) / 3);
-            if (Geometry3.Distance(onSurface, Geometry3.Barycentric(centre, _mesh.Position(p), _mesh.Position(q), 1.0 / 3, 1.0 / 3)) > _limit)
+            if (steps % k == 0)
             {
-                return false;
+                return k;
             }
         }
 
-        return true;
+        for (var k = parts - 1; k >= 2; k--)
+        {
+            if (steps % k == 0)
+            {
+                return k;
+            }
+        }
+
+        var p = _probe.Parameter(i, j);
+        throw new TessellationException(FormattableString.Invariant(
+            $"The surface does not flatten to tolerance {_options.Tolerance} near (u, v) = ({p.U}, {p.V}): it may have a crease or a jump there, or the tolerance is below its rounding noise."));
     }
 
-    private bool EdgeIsFlat(int start, int end)
-    {
-        SurfaceParameter pa = _mesh.Parameter(start), pb = _mesh.Parameter(end);
-        TwistablePoint a = _mesh.Position(start), b = _mesh.Position(end);
-        var n = _options.ProbeCount;
-        for (var k = 0; k < n; k++)
-        {
-            var s = (k + _random.NextDouble()) / n;
-            var q = _sampler.Point(pa.U + s * (pb.U - pa.U), pa.V + s * (pb.V - pa.V));
-            if (Geometry3.Distance(q, Geometry3.Lerp(a, b, s)) > _limit)
-            {
-                return false;
-            }
-        }
+    /// <summary>Parts a curve needs to bring its gap to the target: a chord's gap shrinks with the square of its length.</summary>
+    private static double Squared(double error, double target) => Math.Sqrt(error / target);
 
-        return true;
+    /// <summary>An iso-curve through the middle of a cell; its end points need not be vertices yet.</summary>
+    private double MiddleError(long i0, long j0, long i1, long j1)
+    {
+        SurfaceParameter p0 = _probe.Parameter(i0, j0), p1 = _probe.Parameter(i1, j1);
+        return _probe.EdgeError(i0, j0, i1, j1, _sampler.Point(p0.U, p0.V), _sampler.Point(p1.U, p1.V));
     }
 
-    private bool TriangleIsFlat(int a, int b, int c)
+    private TwistablePoint Point(long i, long j) => _mesh.Position(Vertex(i, j));
+
+    /// <summary>A leaf's triangles, from its complete boundary: the corners and every sample that finer neighbours placed on its sides.</summary>
+    private void Triangulate(long i, long j, long du, long dv, List<BoundaryVertex> boundary)
     {
-        SurfaceParameter pa = _mesh.Parameter(a), pb = _mesh.Parameter(b), pc = _mesh.Parameter(c);
-        TwistablePoint qa = _mesh.Position(a), qb = _mesh.Position(b), qc = _mesh.Position(c);
-        for (var k = 0; k <= _options.ProbeCount; k++)
-        {
-            // The centroid first, where a bump between flat edges shows most, then random points.
-            double beta = 1.0 / 3, gamma = 1.0 / 3;
-            if (k > 0)
-            {
-                beta = _random.NextDouble();
-                gamma = _random.NextDouble();
-                if (beta + gamma > 1)
-                {
-                    (beta, gamma) = (1 - beta, 1 - gamma);
-                }
-            }
-
-            var alpha = 1 - beta - gamma;
-            var q = _sampler.Point(alpha * pa.U + beta * pb.U + gamma * pc.U, alpha * pa.V + beta * pb.V + gamma * pc.V);
-            if (Geometry3.Distance(q, Geometry3.Barycentric(qa, qb, qc, beta, gamma)) > _limit)
-            {
-                return false;
-            }
-        }
-
-        return true;
-    }
-
-    /// <summary>
-    /// A leaf's triangles, from its complete boundary: the corners and every sample that finer
-    /// neighbours placed on its edges. With no such samples, two triangles along the diagonal; with
-    /// some, a fan from the centre through all of them, so a shared edge is cut the same way on both
-    /// sides and no vertex is left hanging in the middle of an edge.
-    /// </summary>
-    private void Triangulate(long i, long j, long size)
-    {
-        var boundary = new List<int>(8);
-        AddBoundary(boundary, i, j, i + size, j);
-        AddBoundary(boundary, i + size, j, i + size, j + size);
-        AddBoundary(boundary, i + size, j + size, i, j + size);
-        AddBoundary(boundary, i, j + size, i, j);
-        if (boundary.Count == 4)
-        {
-            _mesh.AddTriangle(boundary[0], boundary[1], boundary[2]);
-            _mesh.AddTriangle(boundary[0], boundary[2], boundary[3]);
-            return;
-        }
-
-        var centre = Vertex(i + size / 2, j + size / 2);
-        for (var k = 0; k < boundary.Count; k++)
-        {
-            _mesh.AddTriangle(centre, boundary[k], boundary[(k + 1) % boundary.Count]);
-        }
+        AddBoundary(boundary, i, j, i + du, j);
+        AddBoundary(boundary, i + du, j, i + du, j + dv);
+        AddBoundary(boundary, i + du, j + dv, i, j + dv);
+        AddBoundary(boundary, i, j + dv, i, j);
+        BoundaryTriangulator.Triangulate(boundary, _mesh);
     }
 
     /// <summary>The start of the edge and every sample strictly inside it, in order.</summary>
-    private void AddBoundary(List<int> boundary, long i0, long j0, long i1, long j1)
+    private void AddBoundary(List<BoundaryVertex> boundary, long i0, long j0, long i1, long j1)
     {
-        boundary.Add(_vertices[(i0, j0)]);
-        AddInterior(boundary, i0, j0, i1, j1);
+        boundary.Add(new(_vertices[(i0, j0)], i0, j0));
+        _lines.Between(i0, j0, i1, j1, boundary);
     }
-
-    private void AddInterior(List<int> boundary, long i0, long j0, long i1, long j1)
-    {
-        long mi = (i0 + i1) / 2, mj = (j0 + j1) / 2;
-        if ((Math.Abs(i1 - i0) < 2 && Math.Abs(j1 - j0) < 2) || !_vertices.TryGetValue((mi, mj), out var mid))
-        {
-            return;
-        }
-
-        AddInterior(boundary, i0, j0, mi, mj);
-        boundary.Add(mid);
-        AddInterior(boundary, mi, mj, i1, j1);
-    }
-
-    private SurfaceParameter Parameter(long i, long j) => new((double)i / _resolution, (double)j / _resolution);
 
     /// <summary>
     /// The vertex at grid point (i, j), made on first use. On a pole side it is a copy of the pole's one
@@ -217,7 +202,7 @@ internal sealed class SurfaceTessellation
         }
 
         var m = _resolution;
-        var p = Parameter(i, j);
+        var p = _probe.Parameter(i, j);
         (long I, long J)? pole =
             _seams.PoleV0 && j == 0 ? (0, 0)
             : _seams.PoleU0 && i == 0 ? (0, 0)
@@ -229,7 +214,7 @@ internal sealed class SurfaceTessellation
             id = (i, j) == corner
                 ? _mesh.Add(p, _sampler.Point(p.U, p.V), PoleNormal(i, j))
                 : _mesh.AddCopy(p, Vertex(corner.I, corner.J));
-            _vertices[(i, j)] = id;
+            Remember(i, j, id);
             return id;
         }
 
@@ -243,12 +228,12 @@ internal sealed class SurfaceTessellation
             }
 
             id = _mesh.AddCopy(p, original);
-            _vertices[(i, j)] = id;
+            Remember(i, j, id);
             return id;
         }
 
         id = _mesh.Add(p, _sampler.Point(p.U, p.V), _sampler.UnitNormal(p.U, p.V));
-        _vertices[(i, j)] = id;
+        Remember(i, j, id);
         if (_seams.ClosedU && i == 0)
         {
             Vertex(m, j);
@@ -260,6 +245,12 @@ internal sealed class SurfaceTessellation
         }
 
         return id;
+    }
+
+    private void Remember(long i, long j, int id)
+    {
+        _vertices[(i, j)] = id;
+        _lines.Add(i, j, id);
     }
 
     /// <summary>The normal at a pole: the average of the normals just off the pole all around it.</summary>
