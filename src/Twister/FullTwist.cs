@@ -199,6 +199,60 @@ public sealed class FullTwist : Twist
         dv = yv;
     }
 
+    public override void ApplyWithTangent(ref TwistablePoint p, ref TwistableVector du, double u, double v)
+    {
+        var axis = Axis;
+        var unit = _unit;
+        var origin = Origin;
+        var angle = _angle.At(u, v);
+        var slide = _slide.At(u, v);
+        var angleRu = _angle.DerivativeU(u, v);
+        var slideRu = _slide.DerivativeU(u, v);
+        TwistablePoint x = p, y = new();
+        TwistableVector xu = du, yu = new();
+
+        #region GMac : FullTwistPointTangents
+        //GMac.Bind("axis", "Vector3D", axis);
+        //GMac.Bind("unit", "Vector3D", unit);
+        //GMac.Bind("origin", "Vector3D", origin);
+        //GMac.Bind("angle.1", angle);
+        //GMac.Bind("slide.1", slide);
+        //GMac.Bind("angleRu.1", angleRu);
+        //GMac.Bind("slideRu.1", slideRu);
+        //GMac.Bind("x", "Vector3D", x);
+        //GMac.Bind("du", "Vector3D", xu);
+        //GMac.Bind("y", "Vector3D", y);
+        //GMac.Bind("yu", "Vector3D", yu);
+        double tmp0 = Math.Cos(angle);
+        double tmp1 = Math.Sin(angle);
+        double tmp2 = tmp0 - 1.0;
+        double tmp3 = x.y - origin.y;
+        double tmp4 = x.z - origin.z;
+        double tmp5 = x.x - origin.x;
+        double tmp6 = tmp2 * tmp5;
+        double tmp7 = origin.z * tmp2;
+        double tmp8 = origin.y * tmp2;
+        y.x = unit.y * (unit.x * (tmp8 - x.y * tmp2) + unit.y * tmp6 + tmp1 * tmp4) + unit.z * (unit.x * (tmp7 - x.z * tmp2) + unit.z * tmp6 - tmp1 * tmp3) + axis.x * slide + x.x;
+        double tmp9 = unit.z * tmp4 + unit.y * tmp3;
+        double tmp10 = unit.x * tmp5 + tmp9;
+        double tmp11 = tmp0 * tmp10 - tmp10;
+        double tmp12 = unit.x * tmp4 - unit.z * tmp5;
+        y.y = axis.y * slide + x.y * tmp0 - unit.y * tmp11 - tmp1 * tmp12 - tmp8;
+        double tmp13 = unit.x * tmp3 - unit.y * tmp5;
+        y.z = tmp1 * tmp13 + slide * axis.z + x.z * tmp0 - unit.z * tmp11 - tmp7;
+        double tmp14 = unit.y * unit.y + unit.z * unit.z;
+        double tmp15 = xu.z * unit.z + xu.y * unit.y;
+        yu.x = angleRu * (tmp1 * (unit.x * tmp9 - tmp14 * tmp5) + tmp0 * (unit.y * tmp4 - unit.z * tmp3)) + xu.x * (tmp2 * tmp14 + 1.0) + tmp1 * (xu.z * unit.y - xu.y * unit.z) + axis.x * slideRu - unit.x * tmp2 * tmp15;
+        double tmp16 = xu.x * unit.x + tmp15;
+        double tmp17 = tmp16 - tmp16 * tmp0;
+        yu.y = angleRu * (tmp1 * (unit.y * tmp10 - tmp3) - tmp0 * tmp12) + unit.y * tmp17 + tmp1 * (xu.x * unit.z - xu.z * unit.x) + axis.y * slideRu + xu.y * tmp0;
+        yu.z = angleRu * (tmp1 * (unit.z * tmp10 - tmp4) + tmp0 * tmp13) + unit.z * tmp17 + tmp1 * (xu.y * unit.x - xu.x * unit.y) + slideRu * axis.z + xu.z * tmp0;
+        #endregion
+
+        p = y;
+        du = yu;
+    }
+
     /// <summary>
     /// The axis moves as a direction, so the slide c_t f_t · axis moves with it; a reflection turns
     /// the sense of rotation around.

@@ -273,6 +273,59 @@ public sealed class RotationTwist : Twist
         dv = yv;
     }
 
+    public override void ApplyWithTangent(ref TwistablePoint p, ref TwistableVector du, double u, double v)
+    {
+        var axis = _unit;
+        var origin = Origin;
+        var angle = _angle.At(u, v);
+        var ru = _angle.DerivativeU(u, v);
+        TwistablePoint x = p, y = new();
+        TwistableVector xu = du, yu = new();
+
+        #region GMac : RotationTwistPointTangents
+        //GMac.Bind("axis", "Vector3D", axis);
+        //GMac.Bind("origin", "Vector3D", origin);
+        //GMac.Bind("angle.1", angle);
+        //GMac.Bind("ru.1", ru);
+        //GMac.Bind("x", "Vector3D", x);
+        //GMac.Bind("du", "Vector3D", xu);
+        //GMac.Bind("y", "Vector3D", y);
+        //GMac.Bind("yu", "Vector3D", yu);
+        double tmp0 = Math.Cos(angle);
+        double tmp1 = Math.Sin(angle);
+        double tmp2 = tmp0 - 1.0;
+        double tmp3 = x.y - origin.y;
+        double tmp4 = origin.z - x.z;
+        double tmp5 = origin.x - x.x;
+        double tmp6 = tmp2 * tmp5;
+        double tmp7 = tmp3 * tmp1;
+        double tmp8 = origin.z * tmp2;
+        double tmp9 = tmp4 * tmp1;
+        double tmp10 = origin.y * tmp2;
+        y.x = axis.y * (axis.x * (tmp10 - x.y * tmp2) - axis.y * tmp6 - tmp9) + axis.z * (axis.x * (tmp8 - x.z * tmp2) - axis.z * tmp6 - tmp7) + x.x;
+        double tmp11 = axis.y * tmp3 - axis.z * tmp4;
+        double tmp12 = axis.x * tmp5 - tmp11;
+        double tmp13 = tmp12 * tmp0 - tmp12;
+        double tmp14 = axis.z * tmp5;
+        double tmp15 = tmp14 - axis.x * tmp4;
+        y.y = axis.y * tmp13 + x.y * tmp0 - tmp1 * tmp15 - tmp10;
+        double tmp16 = axis.y * tmp5;
+        double tmp17 = -(axis.x * tmp3) - tmp16;
+        y.z = axis.z * tmp13 + x.z * tmp0 - tmp1 * tmp17 - tmp8;
+        double tmp18 = xu.x * tmp2;
+        double tmp19 = xu.z * axis.x;
+        double tmp20 = xu.y * axis.x;
+        yu.x = ru * (tmp1 * (axis.x * tmp11 + axis.y * tmp16 + axis.z * tmp14) + tmp0 * (-(axis.y * tmp4) - axis.z * tmp3)) + axis.y * (axis.y * tmp18 + xu.z * tmp1 - tmp2 * tmp20) + axis.z * (axis.z * tmp18 - tmp2 * tmp19 - xu.y * tmp1) + xu.x;
+        double tmp21 = xu.x * axis.x + xu.y * axis.y + xu.z * axis.z;
+        double tmp22 = tmp21 - tmp12 * ru * tmp1 - tmp21 * tmp0;
+        yu.y = axis.y * tmp22 + ru * (-(tmp0 * tmp15) - tmp7) + tmp1 * (xu.x * axis.z - tmp19) + xu.y * tmp0;
+        yu.z = axis.z * tmp22 + ru * (tmp9 - tmp0 * tmp17) + tmp1 * (tmp20 - axis.y * xu.x) + xu.z * tmp0;
+        #endregion
+
+        p = y;
+        du = yu;
+    }
+
     /// <summary>A reflection turns the sense of rotation about the reflected axis around.</summary>
     protected internal override Twist TransformedBy(Twist by, double u, double v) =>
         new RotationTwist(by.Apply(Axis, u, v), by.Apply(Origin, u, v), by.PreservesOrientation ? Coefficient : -Coefficient, Map);

@@ -93,4 +93,13 @@ public sealed class TwistCascade
         foreach (var twist in _twists) twist.ApplyWithTangents(ref p, ref du, ref dv, u, v);
         return p;
     }
+
+    /// <summary><see cref="ApplyWithTangents"/> for ∂/∂u alone, what a curve needs.</summary>
+    public TwistablePoint ApplyWithTangent(TwistablePoint seed, double u, double v, out TwistableVector du)
+    {
+        var p = seed;
+        du = default;
+        foreach (var twist in _twists) twist.ApplyWithTangent(ref p, ref du, u, v);
+        return p;
+    }
 }

@@ -80,6 +80,25 @@ public sealed class TwistFastPathTests
         }
     }
 
+    [Fact]
+    public void One_tangent_kernels_give_the_u_tangent_of_the_two_tangent_kernels()
+    {
+        var cascade = TwistCascade.Empty
+            .RotateAboutX(2 * Math.PI, ParameterMap.U)
+            .RotateAbout(new(1, 2, -0.5), Origin, 3, ParameterMap.Affine(1, 0.4, 0.1))
+            .Then(new FullTwist(new(-0.3, 0.4, 1.2), new(1, 0.5, -0.5), 5, ParameterMap.OfU(Math.Sin, Math.Cos), 0.7, ParameterMap.U))
+            .Translate(new(0.2, 0.1, -0.3), 1.5, ParameterMap.Affine(-1, 2, 0));
+        var seed = new TwistablePoint(0.8, -0.3, 0.5);
+        foreach (var (u, v) in new[] { (0.1, 0.0), (0.55, 0.3), (0.9, 0.8) })
+        {
+            var expected = cascade.ApplyWithTangents(seed, u, v, out var du, out _);
+            var actual = cascade.ApplyWithTangent(seed, u, v, out var tangent);
+            Near.Equal(expected, actual, 1e-12, $"point at ({u}, {v})");
+            Near.Equal(du, tangent, 1e-12, $"∂/∂u at ({u}, {v})");
+            Near.Equal(Near.Difference(t => cascade.Apply(seed, t, v), u), tangent, 1e-6, $"∂/∂u against a central difference at ({u}, {v})");
+        }
+    }
+
     /// <summary>Rodrigues' rotation of p about the line through o along a (any length) by φ, right-handed.</summary>
     private static TwistablePoint Rodrigues(TwistablePoint p, TwistableVector a, TwistablePoint o, double angle)
     {
