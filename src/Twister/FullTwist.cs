@@ -1,3 +1,5 @@
+using System.Runtime.CompilerServices;
+
 namespace Twister;
 
 /// <summary>
@@ -44,6 +46,7 @@ public sealed class FullTwist : Twist
 
     public override bool IgnoresV => AngleMap.IgnoresV && SlideMap.IgnoresV;
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public override TwistablePoint Apply(TwistablePoint p, double u, double v)
     {
         var axis = Axis;

@@ -1,3 +1,5 @@
+using System.Runtime.CompilerServices;
+
 namespace Twister;
 
 /// <summary>(6.13) rotation by φ = c_r f_r(u, v) about the line through <see cref="Origin"/> along <see cref="Axis"/>.</summary>
@@ -33,6 +35,7 @@ public sealed class RotationTwist : Twist
 
     public override bool IgnoresV => Map.IgnoresV;
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public override TwistablePoint Apply(TwistablePoint p, double u, double v)
     {
         var angle = _angle.At(u, v);
@@ -45,6 +48,7 @@ public sealed class RotationTwist : Twist
         };
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private TwistablePoint GeneralPoint(TwistablePoint p, double angle)
     {
         var axis = _unit;
@@ -75,6 +79,7 @@ public sealed class RotationTwist : Twist
 
     // Fast paths: an axis along a coordinate axis (either sense; the sense is folded into the angle)
     // binds the literal unit axis, so the generated kernel is the plane rotation it reduces to.
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private TwistablePoint AboutXPoint(TwistablePoint p, double angle)
     {
         var origin = Origin;
@@ -98,6 +103,7 @@ public sealed class RotationTwist : Twist
         return y;
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private TwistablePoint AboutYPoint(TwistablePoint p, double angle)
     {
         var origin = Origin;
@@ -121,6 +127,7 @@ public sealed class RotationTwist : Twist
         return y;
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private TwistablePoint AboutZPoint(TwistablePoint p, double angle)
     {
         var origin = Origin;

@@ -1,3 +1,5 @@
+using System.Runtime.CompilerServices;
+
 namespace Twister;
 
 /// <summary>
@@ -21,6 +23,7 @@ internal readonly struct ScaledMap
         else _function = map;
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public double At(double u, double v) => _function is null ? _a * u + _b * v + _k : _coefficient * _function.Evaluate(u, v);
 
     public double DerivativeU(double u, double v) => _function is null ? _a : _coefficient * _function.DerivativeU(u, v);

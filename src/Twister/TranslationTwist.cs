@@ -1,3 +1,5 @@
+using System.Runtime.CompilerServices;
+
 namespace Twister;
 
 /// <summary>(6.12) translation by t = c_t f_t(u, v) w.</summary>
@@ -22,6 +24,7 @@ public sealed class TranslationTwist : Twist
 
     public override bool IgnoresV => Map.IgnoresV;
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public override TwistablePoint Apply(TwistablePoint p, double u, double v)
     {
         var w = Vector;
