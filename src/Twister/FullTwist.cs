@@ -1,3 +1,5 @@
+using System.Runtime.CompilerServices;
+
 namespace Twister;
 
 /// <summary>
@@ -8,6 +10,7 @@ namespace Twister;
 public sealed class FullTwist : Twist
 {
     private readonly TwistableVector _unit;
+    private readonly ScaledMap _angle, _slide;
 
     public FullTwist(TwistableVector axis, TwistablePoint origin, double angleCoefficient, ParameterMap angleMap,
         double slideCoefficient, ParameterMap slideMap)
@@ -24,6 +27,8 @@ public sealed class FullTwist : Twist
         AngleMap = angleMap;
         SlideCoefficient = slideCoefficient;
         SlideMap = slideMap;
+        _angle = new(angleCoefficient, angleMap);
+        _slide = new(slideCoefficient, slideMap);
     }
 
     /// <summary>A constant twist by <paramref name="angle"/> and <paramref name="slide"/> (the parameters of Figure 6-6).</summary>
@@ -41,13 +46,14 @@ public sealed class FullTwist : Twist
 
     public override bool IgnoresV => AngleMap.IgnoresV && SlideMap.IgnoresV;
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public override TwistablePoint Apply(TwistablePoint p, double u, double v)
     {
         var axis = Axis;
         var unit = _unit;
         var origin = Origin;
-        var angle = AngleCoefficient * AngleMap.Evaluate(u, v);
-        var slide = SlideCoefficient * SlideMap.Evaluate(u, v);
+        var angle = _angle.At(u, v);
+        var slide = _slide.At(u, v);
         var y = new TwistablePoint();
 
         #region GMac : FullTwistPoint
@@ -58,20 +64,17 @@ public sealed class FullTwist : Twist
         //GMac.Bind("slide.1", slide);
         //GMac.Bind("x", "Vector3D", p);
         //GMac.Bind("y", "Vector3D", y);
-        double tmp0 = Math.Cos(angle);
-        double tmp1 = Math.Sin(angle);
-        double tmp2 = tmp0 - 1.0;
+        double tmp0 = origin.y - p.y;
+        double tmp1 = p.z - origin.z;
+        double tmp2 = unit.y * tmp1 + unit.z * tmp0;
         double tmp3 = origin.x - p.x;
-        double tmp4 = tmp2 * tmp3;
-        double tmp5 = origin.y - p.y;
-        double tmp6 = p.z - origin.z;
-        double tmp7 = origin.z * tmp2;
-        double tmp8 = origin.y * tmp2;
-        y.x = unit.y * (unit.x * (tmp8 - p.y * tmp2) + tmp1 * tmp6 - unit.y * tmp4) + unit.z * (unit.x * (tmp7 - p.z * tmp2) + tmp1 * tmp5 - unit.z * tmp4) + axis.x * slide + p.x;
-        double tmp9 = unit.x * tmp3 + unit.y * tmp5 - unit.z * tmp6;
-        double tmp10 = tmp9 * tmp0 - tmp9;
-        y.y = unit.y * tmp10 + tmp1 * (-(unit.x * tmp6) - unit.z * tmp3) + axis.y * slide + p.y * tmp0 - tmp8;
-        y.z = unit.z * tmp10 + tmp1 * (unit.y * tmp3 - unit.x * tmp5) + slide * axis.z + p.z * tmp0 - tmp7;
+        double tmp4 = -(unit.x * tmp1) - unit.z * tmp3;
+        double tmp5 = unit.y * tmp3 - unit.x * tmp0;
+        double tmp6 = Math.Cos(angle) - 1.0;
+        double tmp7 = Math.Sin(angle);
+        y.x = tmp2 * tmp7 + axis.x * slide + p.x - (tmp5 * unit.y - tmp4 * unit.z) * tmp6;
+        y.y = tmp4 * tmp7 + axis.y * slide + p.y - (tmp2 * unit.z - tmp5 * unit.x) * tmp6;
+        y.z = tmp5 * tmp7 + slide * axis.z + p.z - (tmp4 * unit.x - tmp2 * unit.y) * tmp6;
         #endregion
 
         return y;
@@ -80,7 +83,7 @@ public sealed class FullTwist : Twist
     public override TwistableVector Apply(TwistableVector d, double u, double v)
     {
         var axis = _unit;
-        var angle = AngleCoefficient * AngleMap.Evaluate(u, v);
+        var angle = _angle.At(u, v);
         var y = new TwistableVector();
 
         #region GMac : RotationTwistVector
@@ -88,16 +91,14 @@ public sealed class FullTwist : Twist
         //GMac.Bind("angle.1", angle);
         //GMac.Bind("d", "Vector3D", d);
         //GMac.Bind("y", "Vector3D", y);
-        double tmp0 = Math.Cos(angle);
-        double tmp1 = Math.Sin(angle);
-        double tmp2 = tmp0 - 1.0;
-        double tmp3 = d.z * axis.x - d.x * axis.z;
-        double tmp4 = d.x * axis.y - d.y * axis.x;
-        y.x = axis.y * (tmp2 * tmp4 + d.z * tmp1) + axis.z * (-(tmp2 * tmp3) - d.y * tmp1) + d.x;
-        double tmp5 = d.y * axis.y + d.x * axis.x + d.z * axis.z;
-        double tmp6 = tmp5 - tmp0 * tmp5;
-        y.y = axis.y * tmp6 + d.y * tmp0 - tmp1 * tmp3;
-        y.z = axis.z * tmp6 + d.z * tmp0 - tmp1 * tmp4;
+        double tmp0 = axis.y * d.z - axis.z * d.y;
+        double tmp1 = axis.z * d.x - axis.x * d.z;
+        double tmp2 = axis.x * d.y - axis.y * d.x;
+        double tmp3 = Math.Cos(angle) - 1.0;
+        double tmp4 = Math.Sin(angle);
+        y.x = tmp0 * tmp4 + d.x - (tmp2 * axis.y - tmp1 * axis.z) * tmp3;
+        y.y = tmp1 * tmp4 + d.y - (tmp0 * axis.z - tmp2 * axis.x) * tmp3;
+        y.z = tmp2 * tmp4 + d.z - (tmp1 * axis.x - tmp0 * axis.y) * tmp3;
         #endregion
 
         return y;
@@ -106,7 +107,7 @@ public sealed class FullTwist : Twist
     public override TwistableBivector Apply(TwistableBivector b, double u, double v)
     {
         var axis = _unit;
-        var angle = AngleCoefficient * AngleMap.Evaluate(u, v);
+        var angle = _angle.At(u, v);
         var y = new TwistableBivector();
 
         #region GMac : RotationTwistBivector
@@ -134,12 +135,12 @@ public sealed class FullTwist : Twist
         var axis = Axis;
         var unit = _unit;
         var origin = Origin;
-        var angle = AngleCoefficient * AngleMap.Evaluate(u, v);
-        var slide = SlideCoefficient * SlideMap.Evaluate(u, v);
-        var angleRu = AngleCoefficient * AngleMap.DerivativeU(u, v);
-        var angleRv = AngleCoefficient * AngleMap.DerivativeV(u, v);
-        var slideRu = SlideCoefficient * SlideMap.DerivativeU(u, v);
-        var slideRv = SlideCoefficient * SlideMap.DerivativeV(u, v);
+        var angle = _angle.At(u, v);
+        var slide = _slide.At(u, v);
+        var angleRu = _angle.DerivativeU(u, v);
+        var angleRv = _angle.DerivativeV(u, v);
+        var slideRu = _slide.DerivativeU(u, v);
+        var slideRv = _slide.DerivativeV(u, v);
         TwistablePoint x = p, y = new();
         TwistableVector xu = du, xv = dv, yu = new(), yv = new();
 
@@ -199,6 +200,60 @@ public sealed class FullTwist : Twist
         p = y;
         du = yu;
         dv = yv;
+    }
+
+    public override void ApplyWithTangent(ref TwistablePoint p, ref TwistableVector du, double u, double v)
+    {
+        var axis = Axis;
+        var unit = _unit;
+        var origin = Origin;
+        var angle = _angle.At(u, v);
+        var slide = _slide.At(u, v);
+        var angleRu = _angle.DerivativeU(u, v);
+        var slideRu = _slide.DerivativeU(u, v);
+        TwistablePoint x = p, y = new();
+        TwistableVector xu = du, yu = new();
+
+        #region GMac : FullTwistPointTangents
+        //GMac.Bind("axis", "Vector3D", axis);
+        //GMac.Bind("unit", "Vector3D", unit);
+        //GMac.Bind("origin", "Vector3D", origin);
+        //GMac.Bind("angle.1", angle);
+        //GMac.Bind("slide.1", slide);
+        //GMac.Bind("angleRu.1", angleRu);
+        //GMac.Bind("slideRu.1", slideRu);
+        //GMac.Bind("x", "Vector3D", x);
+        //GMac.Bind("du", "Vector3D", xu);
+        //GMac.Bind("y", "Vector3D", y);
+        //GMac.Bind("yu", "Vector3D", yu);
+        double tmp0 = Math.Cos(angle);
+        double tmp1 = Math.Sin(angle);
+        double tmp2 = tmp0 - 1.0;
+        double tmp3 = x.y - origin.y;
+        double tmp4 = x.z - origin.z;
+        double tmp5 = x.x - origin.x;
+        double tmp6 = tmp2 * tmp5;
+        double tmp7 = origin.z * tmp2;
+        double tmp8 = origin.y * tmp2;
+        y.x = unit.y * (unit.x * (tmp8 - x.y * tmp2) + unit.y * tmp6 + tmp1 * tmp4) + unit.z * (unit.x * (tmp7 - x.z * tmp2) + unit.z * tmp6 - tmp1 * tmp3) + axis.x * slide + x.x;
+        double tmp9 = unit.z * tmp4 + unit.y * tmp3;
+        double tmp10 = unit.x * tmp5 + tmp9;
+        double tmp11 = tmp0 * tmp10 - tmp10;
+        double tmp12 = unit.x * tmp4 - unit.z * tmp5;
+        y.y = axis.y * slide + x.y * tmp0 - unit.y * tmp11 - tmp1 * tmp12 - tmp8;
+        double tmp13 = unit.x * tmp3 - unit.y * tmp5;
+        y.z = tmp1 * tmp13 + slide * axis.z + x.z * tmp0 - unit.z * tmp11 - tmp7;
+        double tmp14 = unit.y * unit.y + unit.z * unit.z;
+        double tmp15 = xu.z * unit.z + xu.y * unit.y;
+        yu.x = angleRu * (tmp1 * (unit.x * tmp9 - tmp14 * tmp5) + tmp0 * (unit.y * tmp4 - unit.z * tmp3)) + xu.x * (tmp2 * tmp14 + 1.0) + tmp1 * (xu.z * unit.y - xu.y * unit.z) + axis.x * slideRu - unit.x * tmp2 * tmp15;
+        double tmp16 = xu.x * unit.x + tmp15;
+        double tmp17 = tmp16 - tmp16 * tmp0;
+        yu.y = angleRu * (tmp1 * (unit.y * tmp10 - tmp3) - tmp0 * tmp12) + unit.y * tmp17 + tmp1 * (xu.x * unit.z - xu.z * unit.x) + axis.y * slideRu + xu.y * tmp0;
+        yu.z = angleRu * (tmp1 * (unit.z * tmp10 - tmp4) + tmp0 * tmp13) + unit.z * tmp17 + tmp1 * (xu.y * unit.x - xu.x * unit.y) + slideRu * axis.z + xu.z * tmp0;
+        #endregion
+
+        p = y;
+        du = yu;
     }
 
     /// <summary>

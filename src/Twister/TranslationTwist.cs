@@ -1,8 +1,12 @@
+using System.Runtime.CompilerServices;
+
 namespace Twister;
 
 /// <summary>(6.12) translation by t = c_t f_t(u, v) w.</summary>
 public sealed class TranslationTwist : Twist
 {
+    private readonly ScaledMap _theta;
+
     public TranslationTwist(TwistableVector vector, double coefficient, ParameterMap map)
     {
         Require.Finite(vector, nameof(vector));
@@ -11,6 +15,7 @@ public sealed class TranslationTwist : Twist
         Vector = vector;
         Coefficient = coefficient;
         Map = map;
+        _theta = new(coefficient, map);
     }
 
     public TwistableVector Vector { get; }
@@ -19,10 +24,11 @@ public sealed class TranslationTwist : Twist
 
     public override bool IgnoresV => Map.IgnoresV;
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public override TwistablePoint Apply(TwistablePoint p, double u, double v)
     {
         var w = Vector;
-        var theta = Coefficient * Map.Evaluate(u, v);
+        var theta = _theta.At(u, v);
         var y = new TwistablePoint();
 
         #region GMac : TranslationTwistPoint
@@ -45,9 +51,9 @@ public sealed class TranslationTwist : Twist
     public override void ApplyWithTangents(ref TwistablePoint p, ref TwistableVector du, ref TwistableVector dv, double u, double v)
     {
         var w = Vector;
-        var theta = Coefficient * Map.Evaluate(u, v);
-        var ru = Coefficient * Map.DerivativeU(u, v);
-        var rv = Coefficient * Map.DerivativeV(u, v);
+        var theta = _theta.At(u, v);
+        var ru = _theta.DerivativeU(u, v);
+        var rv = _theta.DerivativeV(u, v);
         TwistablePoint x = p, y = new();
         TwistableVector xu = du, xv = dv, yu = new(), yv = new();
 

@@ -28,6 +28,16 @@ public abstract class Twist : ITwistable<Twist>
     public abstract void ApplyWithTangents(ref TwistablePoint p, ref TwistableVector du, ref TwistableVector dv, double u, double v);
 
     /// <summary>
+    /// <see cref="ApplyWithTangents"/> for one tangent (a curve's ∂/∂u): twists whose two-tangent
+    /// kernel is costly override it with a kernel that leaves the second tangent out.
+    /// </summary>
+    public virtual void ApplyWithTangent(ref TwistablePoint p, ref TwistableVector du, double u, double v)
+    {
+        var dv = default(TwistableVector);
+        ApplyWithTangents(ref p, ref du, ref dv, u, v);
+    }
+
+    /// <summary>
     /// This twist applied to another (at the parameters (u, v) of this one): the other's axis, origin
     /// and direction move with it, so that <c>result.Apply(Apply(p))</c> equals <c>Apply(other.Apply(p))</c>.
     /// </summary>

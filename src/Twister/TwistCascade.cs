@@ -53,9 +53,19 @@ public sealed class TwistCascade
         return new(_twists.Select(t => by.Apply(t, u, v)));
     }
 
+    /// <summary>The hot path of curves and surfaces: the common sealed twists are called directly, not virtually.</summary>
     public TwistablePoint Apply(TwistablePoint p, double u, double v)
     {
-        foreach (var twist in _twists) p = twist.Apply(p, u, v);
+        foreach (var twist in _twists)
+        {
+            p = twist switch
+            {
+                RotationTwist rotation => rotation.Apply(p, u, v),
+                FullTwist full => full.Apply(p, u, v),
+                TranslationTwist translation => translation.Apply(p, u, v),
+                _ => twist.Apply(p, u, v),
+            };
+        }
         return p;
     }
 
@@ -81,6 +91,15 @@ public sealed class TwistCascade
         du = default;
         dv = default;
         foreach (var twist in _twists) twist.ApplyWithTangents(ref p, ref du, ref dv, u, v);
+        return p;
+    }
+
+    /// <summary><see cref="ApplyWithTangents"/> for ∂/∂u alone, what a curve needs.</summary>
+    public TwistablePoint ApplyWithTangent(TwistablePoint seed, double u, double v, out TwistableVector du)
+    {
+        var p = seed;
+        du = default;
+        foreach (var twist in _twists) twist.ApplyWithTangent(ref p, ref du, u, v);
         return p;
     }
 }

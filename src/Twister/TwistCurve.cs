@@ -44,7 +44,7 @@ public sealed class TwistCurve : IParametricCurve
     /// <summary>U(t) and N(t) from one pass over the cascade.</summary>
     public TwistablePoint PointAndTangentAt(double t, out TwistableVector tangent)
     {
-        var p = Cascade.ApplyWithTangents(Seed, ParameterAt(t), 0, out var du, out _);
+        var p = Cascade.ApplyWithTangent(Seed, ParameterAt(t), 0, out var du);
         var scale = UEnd - UStart;
         tangent = new(du.x * scale, du.y * scale, du.z * scale);
         return p;
