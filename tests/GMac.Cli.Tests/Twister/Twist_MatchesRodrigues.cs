@@ -15,10 +15,12 @@ public sealed class Twist_MatchesRodrigues
     public void The_committed_full_twist_is_what_gmac_generates_from_the_library()
     {
         var twist = Path.Combine(SharedDsl.RepositoryRoot, "src", "Twister", "FullTwist.cs");
-        Assert.Contains("#region GMac : FullTwistPoint", File.ReadAllText(twist));
+        var text = File.ReadAllText(twist);
+        Assert.Contains("#region GMac : FullTwistPoint", text);
+        var regions = text.Split('\n').Count(line => line.TrimStart().StartsWith("#region GMac :", StringComparison.Ordinal));
         var (exit, output, error) = Tool.Generate([twist], check: true);
         Assert.True(exit == 0, output + error);
-        Assert.Contains("4 region(s)", output);
+        Assert.Contains($"{regions} region(s)", output);
     }
 
     private static TwistablePoint Expected(TwistablePoint origin, TwistablePoint axis, double angle, double slide, TwistablePoint p)
