@@ -8,11 +8,15 @@ namespace RayTracer.Viewing;
 /// The generalized pinhole camera (thesis §6.5): rays leave the eye through the points of a projection
 /// surface S(u, v), given in the camera's rest frame (eye at the origin, looking along −e3, e2 up) and
 /// turned into the world by <see cref="GpcmOrientation"/>. The view plane maps to (u, v) ∈ [0, 1]²
-/// rectangularly: u across the image width from the left edge, v up the height from the bottom edge.
+/// rectangularly or polarly (<see cref="GpcmMapping"/>).
 /// </summary>
-public sealed class Gpcm(IParametricSurface surface) : Camera
+public sealed class Gpcm(IParametricSurface surface, GpcmMapping mapping = GpcmMapping.Rectangular) : Camera
 {
     public IParametricSurface Surface { get; } = surface ?? throw new ArgumentNullException(nameof(surface));
+
+    public GpcmMapping Mapping { get; } = Enum.IsDefined(mapping)
+        ? mapping
+        : throw new ArgumentOutOfRangeException(nameof(mapping), $"Unknown uv mapping {mapping}.");
 
     /// <summary>The orientation from the last <see cref="Orient"/>; null before.</summary>
     public GpcmOrientation? Orientation { get; private set; }
@@ -28,6 +32,40 @@ public sealed class Gpcm(IParametricSurface surface) : Camera
         return new Gpcm(new RectangularProjectionSurface(width, height, distance));
     }
 
+    /// <summary>
+    /// A spherical panorama spanning <paramref name="horizontalDegrees"/> of azimuth (up to 360) and
+    /// <paramref name="verticalDegrees"/> of elevation (up to 180), centred on the look direction.
+    /// </summary>
+    public static Gpcm Spherical(double horizontalDegrees, double verticalDegrees)
+    {
+        RequireFieldOfView(horizontalDegrees, 360, "A spherical camera's horizontal", nameof(horizontalDegrees));
+        RequireFieldOfView(verticalDegrees, 180, "A spherical camera's vertical", nameof(verticalDegrees));
+        return new Gpcm(GpcmSurfaces.Sphere(MathConstants.ToRadians(horizontalDegrees) / 2, MathConstants.ToRadians(verticalDegrees) / 2));
+    }
+
+    /// <summary>A spherical panorama with half as much elevation as azimuth (360° gives the whole sphere on a 2:1 image).</summary>
+    public static Gpcm Spherical(double horizontalDegrees)
+    {
+        RequireFieldOfView(horizontalDegrees, 360, "A spherical camera's", nameof(horizontalDegrees));
+        return Spherical(horizontalDegrees, horizontalDegrees / 2);
+    }
+
+    /// <summary>
+    /// An equidistant fisheye seeing <paramref name="degrees"/> across (up to 360; 180 is the hemisphere)
+    /// on the ellipse inscribed in the image, through a sphere cap with the polar mapping.
+    /// </summary>
+    public static Gpcm Fisheye(double degrees)
+    {
+        RequireFieldOfView(degrees, 360, "A fisheye camera's", nameof(degrees));
+        return new Gpcm(GpcmSurfaces.Cap(MathConstants.ToRadians(degrees) / 2), GpcmMapping.Polar);
+    }
+
+    private static void RequireFieldOfView(double degrees, double most, string what, string name)
+    {
+        if (!(degrees > 0 && degrees <= most))
+            throw new ArgumentOutOfRangeException(name, $"{what} field of view must be more than 0° and at most {most}°, not {degrees}°.");
+    }
+
     /// <summary>Orients the camera from <see cref="Camera.Eye"/>, <see cref="Camera.LookAt"/> and <see cref="Camera.Up"/>; call after changing them.</summary>
     public GpcmOrientation Orient() => Orientation = GpcmOrientation.LookingAt(Eye, LookAt, Up);
 
@@ -35,10 +73,31 @@ public sealed class Gpcm(IParametricSurface surface) : Camera
     public static (double u, double v) RectangularMap(Point2D pp, ViewPlane vp) =>
         (pp.x / (vp.HorizontalResolution * vp.PixelSize) + 0.5, pp.y / (vp.VerticalResolution * vp.PixelSize) + 0.5);
 
+    /// <summary>
+    /// The surface parameters of view-plane point <paramref name="pp"/> under the polar mapping; false
+    /// outside the ellipse inscribed in the image.
+    /// </summary>
+    public static bool PolarMap(Point2D pp, ViewPlane vp, out double u, out double v)
+    {
+        var nx = 2 * pp.x / (vp.HorizontalResolution * vp.PixelSize);
+        var ny = 2 * pp.y / (vp.VerticalResolution * vp.PixelSize);
+        v = Math.Sqrt(nx * nx + ny * ny);
+        var turns = Math.Atan2(ny, nx) / (2 * Math.PI);
+        u = turns < 0 ? turns + 1 : turns;
+        return v <= 1;
+    }
+
     public override bool GetRay(Point2D pp, ViewPlane vp, out Ray ray)
     {
         var orientation = Orientation ?? throw new InvalidOperationException("The camera is not oriented: call Orient() after setting its eye, look-at point and up direction.");
-        var (u, v) = RectangularMap(pp, vp);
+        double u, v;
+        if (Mapping == GpcmMapping.Rectangular)
+            (u, v) = RectangularMap(pp, vp);
+        else if (!PolarMap(pp, vp, out u, out v))
+        {
+            ray = default;
+            return false;
+        }
         var s = Surface.PointAt(u, v);
         ray = new Ray(orientation.Eye, orientation.ToWorld(new Vector3D(s.x, s.y, s.z)).Normalized());
         return true;
