@@ -51,6 +51,18 @@ public sealed class Gpcm(IParametricSurface surface, GpcmMapping mapping = GpcmM
     }
 
     /// <summary>
+    /// A cylindrical panorama spanning <paramref name="horizontalDegrees"/> of azimuth (up to 360) on the
+    /// unit cylinder about image-up; its height keeps the image's aspect on the unrolled cylinder, so
+    /// pixels cover equal arcs and heights.
+    /// </summary>
+    public static Gpcm Cylindrical(double horizontalDegrees, ViewPlane vp)
+    {
+        RequireFieldOfView(horizontalDegrees, 360, "A cylindrical camera's", nameof(horizontalDegrees));
+        var arc = MathConstants.ToRadians(horizontalDegrees);
+        return new Gpcm(GpcmSurfaces.Cylinder(arc / 2, arc * vp.VerticalResolution / vp.HorizontalResolution));
+    }
+
+    /// <summary>
     /// An equidistant fisheye seeing <paramref name="degrees"/> across (up to 360; 180 is the hemisphere)
     /// on the ellipse inscribed in the image, through a sphere cap with the polar mapping.
     /// </summary>

@@ -24,6 +24,19 @@ public static class GpcmSurfaces
     }
 
     /// <summary>
+    /// The unit cylinder about the e2 axis for the rectangular mapping: the point ahead raised to
+    /// height h (v − 1/2), then turned to azimuth λ = (2u − 1) λmax towards image-right about e2:
+    /// (sin λ, h (v − 1/2), −cos λ). Angles in radians.
+    /// </summary>
+    public static SingleTwistSurface Cylinder(double maxAzimuth, double height)
+    {
+        var cascade = TwistCascade.Empty
+            .Translate(new TwistableVector(0, 1, 0), height, ParameterMap.V)
+            .RotateAboutY(1, ParameterMap.Affine(-2 * maxAzimuth, 0, maxAzimuth));
+        return new(new(0, -height / 2, -1), cascade);
+    }
+
+    /// <summary>
     /// The unit sphere cap for the polar mapping: the angle from the view axis ψ = v ψmax by a turn about
     /// e2 towards image-right, then the angle α = 2πu about the view axis:
     /// (sin ψ cos α, sin ψ sin α, −cos ψ). A half angle of π/2 is the hemisphere. Angles in radians.

@@ -115,6 +115,55 @@ public class Gpcm_Catalogue
         Assert.InRange(seen, 500, 900);
     }
 
+    [Theory]
+    [MemberData(nameof(Ups))]
+    public void Cylindrical_gpcm_looks_through_the_unit_cylinder_about_image_up(Vector3D up)
+    {
+        var vp = Plane();
+        var random = new Random(8);
+        var fields = new[] { 360.0, 180.0, 90.0, 301.0 };
+        for (var trial = 0; trial < 20; trial++)
+        {
+            var eye = RandomPoint(random);
+            var lookAt = RandomPoint(random);
+            var degrees = fields[trial % fields.Length];
+            // The hand camera frame (u, v, w) and the closed form of the cylinder point as the truth.
+            var frame = new PinholeCamera();
+            Place(frame, eye, lookAt, up);
+            frame.ComputeUVW();
+            var gpcm = RayTracer.Viewing.Gpcm.Cylindrical(degrees, vp);
+            Place(gpcm, eye, lookAt, up);
+            gpcm.Orient();
+            var maxAzimuth = degrees * Math.PI / 360;
+            var height = 2 * maxAzimuth * 30 / 40;
+            for (var k = 0; k < 50; k++)
+            {
+                var pp = RandomViewPoint(random);
+                var azimuth = pp.x / 10 * maxAzimuth;
+                var y = pp.y / 15 * height;
+                var expected = (Math.Sin(azimuth) * frame.U + y * frame.V - Math.Cos(azimuth) * frame.W).Normalized();
+                Assert.True(gpcm.GetRay(pp, vp, out var actual));
+                AssertClose((Vector3D)eye, (Vector3D)actual.o);
+                AssertClose(expected, actual.d);
+            }
+        }
+    }
+
+    [Fact]
+    public void Full_cylindrical_gpcm_looks_backwards_at_both_side_edges()
+    {
+        var vp = Plane();
+        var camera = RayTracer.Viewing.Gpcm.Cylindrical(360, vp);
+        Place(camera, new Point3D(1, 2, 3), new Point3D(1, 2, 0), Vector3D.UnitY);
+        camera.Orient();
+        Assert.True(camera.GetRay(new Point2D(-10, 0), vp, out var left));
+        Assert.True(camera.GetRay(new Point2D(10, 0), vp, out var right));
+        AssertClose(Vector3D.UnitZ, left.d);
+        AssertClose(Vector3D.UnitZ, right.d);
+        Assert.True(camera.GetRay(new Point2D(5, 0), vp, out var quarter));
+        AssertClose(Vector3D.UnitX, quarter.d);
+    }
+
     [Fact]
     public void Polar_mapping_measures_turns_from_image_right_and_radius_to_the_inscribed_ellipse()
     {
@@ -146,6 +195,8 @@ public class Gpcm_Catalogue
         () => RayTracer.Viewing.Gpcm.Spherical(180, 0),
         () => RayTracer.Viewing.Gpcm.Spherical(180, 181),
         () => RayTracer.Viewing.Gpcm.Spherical(double.PositiveInfinity, 90),
+        () => RayTracer.Viewing.Gpcm.Cylindrical(0, Plane()),
+        () => RayTracer.Viewing.Gpcm.Cylindrical(360.5, Plane()),
         () => RayTracer.Viewing.Gpcm.Fisheye(-90),
         () => RayTracer.Viewing.Gpcm.Fisheye(400),
         () => RayTracer.Viewing.Gpcm.Fisheye(double.NaN),
