@@ -84,9 +84,10 @@ internal sealed class FlatnessProbe(SurfaceSampler sampler, TessellationOptions 
     {
         var n = options.ProbeCount;
         var worst = 0.0;
-        for (var k = 0; k < n; k++)
+        for (var k = -1; k < n; k++)
         {
-            var s = (k + random.NextDouble()) / n;
+            // The middle first, where a curve that bends one way strays most, then one random point per stratum.
+            var s = k < 0 ? 0.5 : (k + random.NextDouble()) / n;
             var q = sampler.Point(pa.U + s * (pb.U - pa.U), pa.V + s * (pb.V - pa.V));
             worst = Math.Max(worst, Geometry3.Distance(q, Geometry3.Lerp(a, b, s)));
         }
@@ -97,10 +98,12 @@ internal sealed class FlatnessProbe(SurfaceSampler sampler, TessellationOptions 
     private double ProbeTriangle(SurfaceParameter pa, SurfaceParameter pb, SurfaceParameter pc, TwistablePoint qa, TwistablePoint qb, TwistablePoint qc, ProbeRandom random)
     {
         var worst = 0.0;
-        for (var k = 0; k <= options.ProbeCount; k++)
+        for (var k = -3; k <= options.ProbeCount; k++)
         {
-            // The centroid first, where a bump between flat edges shows most, then random points.
-            double beta = 1.0 / 3, gamma = 1.0 / 3;
+            // The middles of the sides first, where a surface curved the same way in u and v strays most
+            // (the diagonal's middle gets both bends), then the centroid, where a bump between flat
+            // edges shows most, then random points.
+            var (beta, gamma) = k switch { -3 => (0.5, 0.0), -2 => (0.0, 0.5), -1 => (0.5, 0.5), _ => (1.0 / 3, 1.0 / 3) };
             if (k > 0)
             {
                 beta = random.NextDouble();

@@ -84,6 +84,7 @@ internal sealed class SurfaceTessellation
             // Where one direction is cut alone, the other keeps its gap and this one gets the rest.
             ku = splitU ? Parts(du, Squared(alongU, splitV ? 0.5 * limit : Math.Max(limit - alongV, 0.25 * limit)), i, j) : 1;
             kv = splitV ? Parts(dv, Squared(alongV, splitU ? 0.5 * limit : Math.Max(limit - alongU, 0.25 * limit)), i, j) : 1;
+            (ku, kv) = Enough(du, dv, ku, kv, alongU, alongV, _probe.InteriorError(i, j, du, dv, [a, b, c, d]), i, j);
         }
         else
         {
@@ -158,6 +159,41 @@ internal sealed class SurfaceTessellation
         var p = _probe.Parameter(i, j);
         throw new TessellationException(FormattableString.Invariant(
             $"The surface does not flatten to tolerance {_options.Tolerance} near (u, v) = ({p.U}, {p.V}): it may have a crease or a jump there, or the tolerance is below its rounding noise."));
+    }
+
+    /// <summary>
+    /// Adds parts until the children's predicted gap is within the limit. The sags of the two directions
+    /// add up inside a cell; what the interior shows beyond them is a twist (as near a pole), which
+    /// stands at right angles to the sags and falls with the area of a part, not its square. Without
+    /// this, a cell cut just short of enough is cut in two once more, which doubles its triangles.
+    /// </summary>
+    private (long Ku, long Kv) Enough(long du, long dv, long ku, long kv, double alongU, double alongV, double inside, long i, long j)
+    {
+        // Inside a cell curved the same way in u and v (a dome) the sags add; in a saddle they cancel,
+        // and the interior shows less than their sum. Whatever it shows beyond their sum is twist.
+        var sag = alongU + alongV;
+        var adding = sag > 0 ? Math.Min(1, inside / sag) : 0;
+        var twist = Math.Sqrt(Math.Max(0, inside * inside - sag * sag));
+        double Predicted(long pu, long pv)
+        {
+            double u = alongU / (pu * pu), v = alongV / (pv * pv);
+            var bend = Math.Max(Math.Max(u, v), adding * (u + v));
+            return Math.Sqrt(bend * bend + Math.Pow(twist / (pu * pv), 2));
+        }
+
+        while (Predicted(ku, kv) > _probe.Limit)
+        {
+            var moreU = alongU / (ku * ku) >= alongV / (kv * kv);
+            var next = moreU ? Parts(du, ku + 1, i, j) : Parts(dv, kv + 1, i, j);
+            if (next <= (moreU ? ku : kv))
+            {
+                break; // no finer whole cut at this level: the children look again
+            }
+
+            (ku, kv) = moreU ? (next, kv) : (ku, next);
+        }
+
+        return (ku, kv);
     }
 
     /// <summary>Parts a curve needs to bring its gap to the target: a chord's gap shrinks with the square of its length.</summary>
