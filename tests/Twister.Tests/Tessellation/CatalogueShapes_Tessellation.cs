@@ -35,22 +35,7 @@ public class CatalogueShapes_Tessellation
     public void A_closed_catalogue_surface_welds_into_a_closed_mesh_of_its_euler_characteristic(string name, int euler)
     {
         var mesh = SurfaceTessellator.Tessellate(Surface(name), new TessellationOptions(5e-3));
-        var directed = new Dictionary<(int, int), int>();
-        for (var t = 0; t < mesh.TriangleCount; t++)
-        {
-            for (var k = 0; k < 3; k++)
-            {
-                int a = mesh.Welded[mesh.Indices[3 * t + k]], b = mesh.Welded[mesh.Indices[3 * t + (k + 1) % 3]];
-                Assert.NotEqual(a, b);
-                directed[(a, b)] = directed.GetValueOrDefault((a, b)) + 1;
-            }
-        }
-
-        // Every edge walked once each way: shared by exactly two consistently wound triangles, so no crack.
-        Assert.All(directed, e => Assert.Equal(1, e.Value));
-        Assert.All(directed.Keys, e => Assert.True(directed.ContainsKey((e.Item2, e.Item1)), $"edge {e} has no twin"));
-        var vertices = directed.Keys.Select(e => e.Item1).Distinct().Count();
-        Assert.Equal(euler, vertices - directed.Count / 2 + mesh.TriangleCount);
+        MeshMeasure.AssertClosed(mesh, euler);
     }
 
     [Theory]

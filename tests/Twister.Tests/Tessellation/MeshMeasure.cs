@@ -96,4 +96,28 @@ internal static class MeshMeasure
 
     public static double Distance(TwistablePoint a, TwistablePoint b) =>
         Math.Sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
+
+    /// <summary>
+    /// Asserts that the welded mesh is closed: every edge walked exactly once in each direction (two
+    /// consistently wound triangles, no crack and no T-junction, since a vertex on one side of an
+    /// edge only would leave an edge walked once), and that V − E + F is <paramref name="euler"/>.
+    /// </summary>
+    public static void AssertClosed(TriangleMesh mesh, int euler)
+    {
+        var directed = new Dictionary<(int, int), int>();
+        for (var t = 0; t < mesh.TriangleCount; t++)
+        {
+            for (var k = 0; k < 3; k++)
+            {
+                int a = mesh.Welded[mesh.Indices[3 * t + k]], b = mesh.Welded[mesh.Indices[3 * t + (k + 1) % 3]];
+                Assert.NotEqual(a, b);
+                directed[(a, b)] = directed.GetValueOrDefault((a, b)) + 1;
+            }
+        }
+
+        Assert.All(directed, e => Assert.Equal(1, e.Value));
+        Assert.All(directed.Keys, e => Assert.True(directed.ContainsKey((e.Item2, e.Item1)), $"edge {e} has no twin"));
+        var vertices = directed.Keys.Select(e => e.Item1).Distinct().Count();
+        Assert.Equal(euler, vertices - directed.Count / 2 + mesh.TriangleCount);
+    }
 }

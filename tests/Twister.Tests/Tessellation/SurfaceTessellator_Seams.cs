@@ -19,24 +19,7 @@ public class SurfaceTessellator_Seams
     public void A_closed_surface_welds_into_a_closed_mesh_with_every_edge_shared_by_two_triangles(string name, double tolerance, int euler)
     {
         var mesh = SurfaceTessellator.Tessellate(SurfaceTessellator_Accuracy.ByName(name), new TessellationOptions(tolerance));
-        var directed = new Dictionary<(int, int), int>();
-        for (var t = 0; t < mesh.TriangleCount; t++)
-        {
-            for (var k = 0; k < 3; k++)
-            {
-                int a = mesh.Welded[mesh.Indices[3 * t + k]], b = mesh.Welded[mesh.Indices[3 * t + (k + 1) % 3]];
-                Assert.NotEqual(a, b);
-                directed[(a, b)] = directed.GetValueOrDefault((a, b)) + 1;
-            }
-        }
-
-        // Each edge once in each direction: two triangles, consistently wound, no T-junction (a vertex
-        // on one side of an edge but not the other would leave an edge walked only once).
-        Assert.All(directed, e => Assert.Equal(1, e.Value));
-        Assert.All(directed.Keys, e => Assert.True(directed.ContainsKey((e.Item2, e.Item1)), $"edge {e} has no twin"));
-
-        var vertices = directed.Keys.Select(e => e.Item1).Distinct().Count();
-        Assert.Equal(euler, vertices - directed.Count / 2 + mesh.TriangleCount);
+        MeshMeasure.AssertClosed(mesh, euler);
     }
 
     [Theory]
