@@ -36,6 +36,7 @@ public static class Application
             ListCommand(stdout),
             RenderCommand.Create(stdout, stderr, interactiveProgress),
             BenchCommand(stdout),
+            Experiments.ExperimentsCommand.Create(stdout, stderr),
         };
 
     /// <summary>
