@@ -71,7 +71,7 @@ public static class Application
 
     private static Command ListCommand(TextWriter stdout)
     {
-        var list = new Command("list", "Lists the built-in scenes with their default size, samples and a description.");
+        var list = new Command("list", "Lists the built-in scenes with their default size, samples and a description, then the cameras.");
         list.SetAction(_ =>
         {
             var scenes = SceneFactory.All;
@@ -79,6 +79,12 @@ public static class Application
             foreach (var scene in scenes)
                 stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
                     $"{scene.Name.PadRight(width)}  {scene.DefaultWidth}x{scene.DefaultHeight} {scene.DefaultSamples,3} spp  {scene.Description}"));
+            stdout.WriteLine();
+            stdout.WriteLine("Cameras for 'render --camera NAME[:DEGREES]' (horizontal field of view; default in brackets):");
+            var nameWidth = CameraCatalog.All.Max(c => c.Name.Length);
+            foreach (var camera in CameraCatalog.All)
+                stdout.WriteLine(string.Create(CultureInfo.InvariantCulture,
+                    $"{camera.Name.PadRight(nameWidth)}  [{camera.DefaultDegrees}°, {camera.RangeText}]  {camera.Description}"));
             return Ok;
         });
         return list;

@@ -49,10 +49,13 @@ internal static class RenderCommand
         var image = Options.ExistingFile("--image", $"Image ({ImageFile.ReadableFormats}) mapped by the texture-image scene");
         var mesh = Options.ExistingFile("--mesh", "PLY or STL mesh to render in a default studio instead of a scene", ".ply", ".stl");
 
+        var cameraOptions = new CameraOptions();
         var render = new Command("render", "Renders a built-in scene, or a mesh file in a studio, to a PNG or HDR image.")
         {
             scene, output, width, height, samples, seed, threads, maxDepth, image, mesh,
         };
+        foreach (var option in cameraOptions.All)
+            render.Options.Add(option);
         render.Validators.Add(result =>
         {
             var sceneGiven = result.GetResult(scene) is { Tokens.Count: > 0 };
@@ -81,6 +84,7 @@ internal static class RenderCommand
                 },
                 Seed = parsed.GetValue(seed) ?? 0,
                 Threads = parsed.GetValue(threads) ?? Environment.ProcessorCount,
+                Camera = cameraOptions.Read(parsed),
             };
             return Render(request, stdout, stderr, interactiveProgress);
         });
@@ -95,6 +99,7 @@ internal static class RenderCommand
         public required SceneSettings Settings { get; init; }
         public required ulong Seed { get; init; }
         public required int Threads { get; init; }
+        public required CameraRequest Camera { get; init; }
     }
 
     private static int Render(RenderRequest request, TextWriter stdout, TextWriter stderr, bool interactive)
@@ -126,6 +131,13 @@ internal static class RenderCommand
         {
             stderr.WriteLine($"raytracer: error: cannot build scene '{scene.Name}': {e.Message}");
             return Application.Failure;
+        }
+
+        // Camera options are checked against the scene's own camera, so some mistakes show only now.
+        if (request.Camera.ApplyTo(world) is { } cameraError)
+        {
+            stderr.WriteLine($"raytracer: error: {cameraError}");
+            return Application.Usage;
         }
 
         var progress = new ProgressBar(stderr, interactive);

@@ -1,6 +1,7 @@
 using System.Diagnostics.CodeAnalysis;
 using RayTracer.Scenes;
 using RayTracer.Scenes.Cameras;
+using RayTracer.Scenes.Gpcm;
 using RayTracer.Scenes.Lighting;
 using RayTracer.Scenes.Meshes;
 using RayTracer.Scenes.Primitives;
@@ -31,6 +32,11 @@ public static class SceneFactory
         () => new FisheyeScene(),
         () => new SphericalPanoramaScene(),
         () => new StereoScene(),
+        () => new GpcmRectangularScene(),
+        () => new GpcmCylindricalScene(),
+        () => new GpcmConicScene(),
+        () => new GpcmSphericalScene(),
+        () => new GpcmFisheyeScene(),
         () => new PointAndDirectionalScene(),
         () => new AmbientOcclusionScene(),
         () => new RectangleLightScene(),

@@ -18,6 +18,26 @@ public sealed class Gpcm(IParametricSurface surface, GpcmMapping mapping = GpcmM
         ? mapping
         : throw new ArgumentOutOfRangeException(nameof(mapping), $"Unknown uv mapping {mapping}.");
 
+    /// <summary>Rays start at the eye (default) or on the surface (a cutting surface, thesis §6.5.3).</summary>
+    public GpcmRayOrigin RayOrigin { get; set; } = GpcmRayOrigin.Eye;
+
+    /// <summary>Rays run from the eye through the surface (default) or back from the surface through the eye.</summary>
+    public GpcmRayDirection RayDirection { get; set; } = GpcmRayDirection.Outward;
+
+    /// <summary>
+    /// World length of one rest-frame unit of the surface. Directions do not depend on it; it places the
+    /// surface, and so the start of rays with <see cref="GpcmRayOrigin.Surface"/>.
+    /// </summary>
+    public double SurfaceScale
+    {
+        get => _surfaceScale;
+        set => _surfaceScale = value > 0 && double.IsFinite(value)
+            ? value
+            : throw new ArgumentOutOfRangeException(nameof(SurfaceScale), $"The surface scale must be a positive finite number, not {value}.");
+    }
+
+    private double _surfaceScale = 1;
+
     /// <summary>The orientation from the last <see cref="Orient"/>; null before.</summary>
     public GpcmOrientation? Orientation { get; private set; }
 
@@ -60,6 +80,19 @@ public sealed class Gpcm(IParametricSurface surface, GpcmMapping mapping = GpcmM
         RequireFieldOfView(horizontalDegrees, 360, "A cylindrical camera's", nameof(horizontalDegrees));
         var arc = MathConstants.ToRadians(horizontalDegrees);
         return new Gpcm(GpcmSurfaces.Cylinder(arc / 2, arc * vp.VerticalResolution / vp.HorizontalResolution));
+    }
+
+    /// <summary>
+    /// A conic panorama spanning <paramref name="horizontalDegrees"/> of azimuth (up to 360) on a cone
+    /// about image-up whose generatrix leans <paramref name="tiltDegrees"/> towards the axis (default 30°:
+    /// the cone narrows upwards). Its middle ring is the unit circle and its slant keeps the image's aspect
+    /// there, as the cylinder's height does; a tilt of 0° is the cylindrical panorama.
+    /// </summary>
+    public static Gpcm Conic(double horizontalDegrees, ViewPlane vp, double tiltDegrees = 30)
+    {
+        RequireFieldOfView(horizontalDegrees, 360, "A conic camera's", nameof(horizontalDegrees));
+        var arc = MathConstants.ToRadians(horizontalDegrees);
+        return new Gpcm(GpcmSurfaces.Cone(arc / 2, arc * vp.VerticalResolution / vp.HorizontalResolution, MathConstants.ToRadians(tiltDegrees)));
     }
 
     /// <summary>
@@ -111,7 +144,12 @@ public sealed class Gpcm(IParametricSurface surface, GpcmMapping mapping = GpcmM
             return false;
         }
         var s = Surface.PointAt(u, v);
-        ray = new Ray(orientation.Eye, orientation.ToWorld(new Vector3D(s.x, s.y, s.z)).Normalized());
+        var toSurface = orientation.ToWorld(new Vector3D(s.x, s.y, s.z));
+        var direction = toSurface.Normalized();
+        if (RayDirection == GpcmRayDirection.Inward)
+            direction = -direction;
+        var origin = RayOrigin == GpcmRayOrigin.Eye ? orientation.Eye : orientation.Eye + _surfaceScale * toSurface;
+        ray = new Ray(origin, direction);
         return true;
     }
 }

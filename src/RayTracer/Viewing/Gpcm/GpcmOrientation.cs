@@ -45,12 +45,8 @@ public sealed class GpcmOrientation
     /// <summary>Orients a camera at <paramref name="eye"/> looking at <paramref name="lookAt"/> with the given up direction (any length but zero).</summary>
     public static GpcmOrientation LookingAt(Point3D eye, Point3D lookAt, Vector3D up)
     {
-        var look = lookAt - eye;
-        if (!(look.LengthSquared > 0) || !double.IsFinite(look.LengthSquared))
-            throw new ArgumentException($"The eye {eye} and the look-at point {lookAt} must be distinct finite points.", nameof(lookAt));
-        if (!(up.LengthSquared > 0) || !double.IsFinite(up.LengthSquared))
-            throw new ArgumentException($"The up direction {up} must be a nonzero finite vector.", nameof(up));
-        var d = look.Normalized();
+        Validate(eye, lookAt, up);
+        var d = (lookAt - eye).Normalized();
         var n = up.Normalized();
 
         // Stand the camera up: e2 onto up. A half turn about e1 when up is −e2.
@@ -73,6 +69,19 @@ public sealed class GpcmOrientation
         var tilt = OrientationKernels.RotorOnto(heading, d);
         var rotor = OrientationKernels.Compose(tilt, OrientationKernels.Compose(turn, stand));
         return new GpcmOrientation(eye, rotor);
+    }
+
+    /// <summary>
+    /// Throws <see cref="ArgumentException"/> unless the eye and the look-at point are distinct finite
+    /// points and the up direction is a nonzero finite vector: what any camera needs to be oriented.
+    /// </summary>
+    public static void Validate(Point3D eye, Point3D lookAt, Vector3D up)
+    {
+        var look = lookAt - eye;
+        if (!(look.LengthSquared > 0) || !double.IsFinite(look.LengthSquared))
+            throw new ArgumentException($"The eye {eye} and the look-at point {lookAt} must be distinct finite points.", nameof(lookAt));
+        if (!(up.LengthSquared > 0) || !double.IsFinite(up.LengthSquared))
+            throw new ArgumentException($"The up direction {up} must be a nonzero finite vector.", nameof(up));
     }
 
     /// <summary>
