@@ -132,6 +132,19 @@ public sealed class Gpcm(IParametricSurface surface, GpcmMapping mapping = GpcmM
         return v <= 1;
     }
 
+    /// <summary>
+    /// S(u, v), calling the catalogue's sealed surface types directly so the JIT can inline them (the
+    /// same points as <see cref="IParametricSurface.PointAt"/>; u and v come from finite view-plane
+    /// coordinates, so their checks are skipped).
+    /// </summary>
+    private TwistablePoint SurfacePoint(double u, double v) => Surface switch
+    {
+        SingleTwistSurface twisted => twisted.Cascade.Apply(twisted.Seed,
+            twisted.UStart + u * (twisted.UEnd - twisted.UStart), twisted.VStart + v * (twisted.VEnd - twisted.VStart)),
+        RectangularProjectionSurface rectangle => rectangle.PointAt(u, v),
+        _ => Surface.PointAt(u, v),
+    };
+
     public override bool GetRay(Point2D pp, ViewPlane vp, out Ray ray)
     {
         var orientation = Orientation ?? throw new InvalidOperationException("The camera is not oriented: call Orient() after setting its eye, look-at point and up direction.");
@@ -143,7 +156,7 @@ public sealed class Gpcm(IParametricSurface surface, GpcmMapping mapping = GpcmM
             ray = default;
             return false;
         }
-        var s = Surface.PointAt(u, v);
+        var s = SurfacePoint(u, v);
         var toSurface = orientation.ToWorld(new Vector3D(s.x, s.y, s.z));
         var direction = toSurface.Normalized();
         if (RayDirection == GpcmRayDirection.Inward)
