@@ -76,12 +76,4 @@ public sealed class Application_Cameras : IDisposable
         Assert.Contains("distinct", err);
         Assert.False(File.Exists(Path.Combine(_dir, "out.png")));
     }
-
-    [Fact]
-    public void Conic_camera_too_tall_for_its_image_is_a_usage_error()
-    {
-        var (code, _, err) = Run(["render", "spheres", "-o", Path.Combine(_dir, "out.png"), "--width", "10", "--height", "10", "--camera", "conic:360"]);
-        Assert.Equal(2, code);
-        Assert.Contains("apex", err);
-    }
 }

@@ -86,13 +86,21 @@ public sealed class Gpcm(IParametricSurface surface, GpcmMapping mapping = GpcmM
     /// A conic panorama spanning <paramref name="horizontalDegrees"/> of azimuth (up to 360) on a cone
     /// about image-up whose generatrix leans <paramref name="tiltDegrees"/> towards the axis (default 30°:
     /// the cone narrows upwards). Its middle ring is the unit circle and its slant keeps the image's aspect
-    /// there, as the cylinder's height does; a tilt of 0° is the cylindrical panorama.
+    /// there, as the cylinder's height does, up to where the cone's narrow end is a fifth of the middle
+    /// ring (a taller image then stretches rows); a tilt of 0° is the cylindrical panorama.
     /// </summary>
     public static Gpcm Conic(double horizontalDegrees, ViewPlane vp, double tiltDegrees = 30)
     {
         RequireFieldOfView(horizontalDegrees, 360, "A conic camera's", nameof(horizontalDegrees));
         var arc = MathConstants.ToRadians(horizontalDegrees);
-        return new Gpcm(GpcmSurfaces.Cone(arc / 2, arc * vp.VerticalResolution / vp.HorizontalResolution, MathConstants.ToRadians(tiltDegrees)));
+        var tilt = MathConstants.ToRadians(tiltDegrees);
+        // A tall image would take the cone through its apex: stop where the narrow end keeps a fifth of
+        // the middle ring's radius, as the spherical panorama stops at the poles.
+        var slant = arc * vp.VerticalResolution / vp.HorizontalResolution;
+        var sine = Math.Abs(Math.Sin(tilt));
+        if (sine > 0)
+            slant = Math.Min(slant, 1.6 / sine);
+        return new Gpcm(GpcmSurfaces.Cone(arc / 2, slant, tilt));
     }
 
     /// <summary>

@@ -46,9 +46,18 @@ public class Gpcm_ConeAndCuttingSurface
         var apex = Assert.Throws<ArgumentOutOfRangeException>(() => GpcmSurfaces.Cone(Math.PI, 6, 0.5));
         Assert.Contains("apex", apex.Message);
         Assert.Throws<ArgumentOutOfRangeException>(() => GpcmSurfaces.Cone(Math.PI, 1, Math.PI / 2));
-        // A square image for a full turn asks for a slant of 2π: too long for the default tilt.
+    }
+
+    [Fact]
+    public void Conic_camera_for_a_tall_image_stops_short_of_the_apex()
+    {
+        // A square image for a full turn would ask for a slant of 2π, past the apex at the default tilt.
         var square = new ViewPlane { HorizontalResolution = 20, VerticalResolution = 20 };
-        Assert.Throws<ArgumentOutOfRangeException>(() => RayTracer.Viewing.Gpcm.Conic(360, square));
+        var cone = (Twister.SingleTwistSurface)RayTracer.Viewing.Gpcm.Conic(360, square).Surface;
+        var top = cone.PointAt(0.5, 1);
+        var bottom = cone.PointAt(0.5, 0);
+        Assert.Equal(0.2, -top.z, 1e-12);
+        Assert.Equal(1.8, -bottom.z, 1e-12);
     }
 
     [Fact]
