@@ -40,7 +40,7 @@ public static class InstancingCommand
                 Height = parsed.GetValue(height) ?? (isQuick ? 72 : 480),
                 Threads = parsed.GetValue(threads) ?? 1,
                 Repeats = parsed.GetValue(repeats) ?? (isQuick ? 1 : 5),
-                MemorySamples = isQuick ? 500 : 20000,
+                MemorySamples = isQuick ? 100 : 20000,
                 Progress = message => stderr.WriteLine(message),
             };
             try
