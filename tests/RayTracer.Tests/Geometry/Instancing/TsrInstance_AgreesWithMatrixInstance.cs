@@ -2,6 +2,7 @@ using RayTracer.Geometry;
 using RayTracer.Geometry.Compound;
 using RayTracer.Geometry.Generic;
 using RayTracer.Geometry.Instancing;
+using RayTracer.Geometry.Parametric;
 using RayTracer.Geometry.Universal;
 using RayTracer.Maths;
 using RayTracer.Randomness;
@@ -13,7 +14,7 @@ namespace RayTracer.Tests.Geometry.Instancing;
 
 public class TsrInstance_AgreesWithMatrixInstance
 {
-    public static TheoryData<string> Targets => ["sphere", "tube", "torus", "compound"];
+    public static TheoryData<string> Targets => ["sphere", "tube", "torus", "compound", "mesh"];
 
     [Theory]
     [MemberData(nameof(Targets))]
@@ -78,6 +79,9 @@ public class TsrInstance_AgreesWithMatrixInstance
                 return new OpenCylinder(-1, 1.5, 0.8);
             case "torus":
                 return new Torus(1, 0.35);
+            case "mesh":
+                // A smooth-shaded triangle mesh in its own hierarchy: a tessellated Twister torus.
+                return new TessellatedSurface(TwistSurfaces.Torus(1, 0.4), 0.05);
             default:
                 var compound = new CompoundObject();
                 compound.Add(new Box(new Point3D(-1, -0.5, -0.5), new Point3D(0.5, 0.5, 0.8)));
