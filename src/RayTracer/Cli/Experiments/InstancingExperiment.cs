@@ -161,20 +161,28 @@ internal sealed class InstancingExperiment
     }
 
     /// <summary>
-    /// Bytes that stay on the heap per tube: <see cref="MemorySamples"/> tubes of the scene's specs are
-    /// built into an array made beforehand, with full collections before and after, so the temporaries
-    /// of building (frames, twists, matrices composed on the way) are not counted and shared materials
-    /// are not either.
+    /// Bytes that stay on the heap per tube: the scene's tubes are built, cycling through its specs,
+    /// into an array made beforehand, with full collections before and after, so the temporaries of
+    /// building (frames, twists, matrices composed on the way) and shared materials are not counted.
+    /// This is done for <see cref="MemorySamples"/> and for twice as many tubes, and the difference is
+    /// divided by <see cref="MemorySamples"/>, so a constant cost of weighing cancels.
     /// </summary>
     private double BytesPerObject(InstancingScene scene, CylinderMethod method)
     {
         var specs = scene.Cylinders();
-        var kept = new GeometricObject[MemorySamples];
-        var before = GC.GetTotalMemory(forceFullCollection: true);
-        for (var i = 0; i < kept.Length; i++)
-            kept[i] = specs[i % specs.Count].Create(method);
-        var after = GC.GetTotalMemory(forceFullCollection: true);
-        GC.KeepAlive(kept);
-        return (after - before) / (double)kept.Length;
+        long Weigh(int count)
+        {
+            var kept = new GeometricObject[count];
+            var before = GC.GetTotalMemory(forceFullCollection: true);
+            for (var i = 0; i < kept.Length; i++)
+                kept[i] = specs[i % specs.Count].Create(method);
+            var after = GC.GetTotalMemory(forceFullCollection: true);
+            GC.KeepAlive(kept);
+            return after - before;
+        }
+
+        var single = Weigh(MemorySamples);
+        var twice = Weigh(2 * MemorySamples);
+        return (twice - single) / (double)MemorySamples;
     }
 }

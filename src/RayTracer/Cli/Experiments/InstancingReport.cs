@@ -26,14 +26,15 @@ internal static class InstancingReport
             "instance of the generic tube; **TSR-Cyl** a TSR instance (12 coefficients) and **RSTR-Cyl** an RSTR instance " +
             "(a point and a mirror normal) of the same tube. Every tube is open, as in the generic tube.");
         md.AppendLine();
-        md.AppendLine("Rays are every ray cast (primary, reflected, shadow). Test invocations are the calls on tubes (nearest-hit, " +
+        md.Append("Rays are every ray cast (primary, reflected, shadow). Test invocations are the calls on tubes (nearest-hit, " +
             "shading and shadow tests), counted per method in a render on one thread that also records each call; instances " +
             "have looser bounding boxes (the box of the moved local box), so the hierarchy asks them more often. The test time " +
             "is the time of exactly those calls asked again of the bare tubes, in order, on one thread: the tests alone, " +
             (InstancingCpuClock.IsThreadTime ? "in the thread's CPU time (time spent waiting for a core is not counted), " : "in wall time, ") +
-            "without traversal and shading. The render time is one whole render of the bare tubes, for comparison. Memory is measured: ");
-        md.AppendLine(Invariant($"{run.MemorySamples} tubes of the scene built and kept, the heap weighed after full collections before and after; ") +
-            "shared materials are not counted.");
+            "without traversal and shading. The render time is the wall time of one whole render of the bare tubes, for comparison " +
+            "(it moves with the load of the machine). Memory is measured: ");
+        md.AppendLine(Invariant($"{run.MemorySamples} and {2 * run.MemorySamples} tubes of the scene built and kept, the heap weighed after full collections before and after, ") +
+            Invariant($"and the difference of the two divided by {run.MemorySamples}; shared materials are not counted."));
         md.AppendLine();
 
         md.Append("| | |");
