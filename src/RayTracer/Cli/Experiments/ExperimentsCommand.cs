@@ -13,6 +13,7 @@ public static class ExperimentsCommand
         var experiments = new Command("experiments", "Runs the intersection-method experiments and writes their reports.");
         _ = stdout;
         _ = stderr;
+        experiments.Add(InstancingCommand.Create(stdout, stderr));
         return experiments;
     }
 }
