@@ -7,7 +7,8 @@ namespace GMac.Core.CodeGeneration;
 /// <summary>
 /// <c>float</c> literals for emitted code. An exact constant is rounded once, from its rational
 /// value straight to the nearest float, so a constant such as 1/3 is the float nearest 1/3 and
-/// not the float nearest the double nearest 1/3.
+/// not the float nearest the double nearest 1/3. A constant known only as a double (π, a folded
+/// square root) is within a double rounding of its value, which narrowing adds to the float rounding.
 /// </summary>
 public static class SingleLiteral
 {
