@@ -42,6 +42,7 @@ internal static class BindingPointGenerator
     private static GeneratedRegion GenerateRegion(BindingPointFile file, BindingPoint point, GenerationContext context, bool includeStatistics,
         Func<string, bool> isTaken, List<Diagnostic> diagnostics)
     {
+        if (ScalarTypeOf(file, point, context, diagnostics) is not { } scalarType) return new GeneratedRegion(point, null, null);
         GenerationOutcome outcome;
         try
         {
@@ -70,14 +71,43 @@ internal static class BindingPointGenerator
                 NewLine = file.Source.NewLine,
                 IncludeStatistics = includeStatistics,
                 IsNameTaken = isTaken,
+                ScalarType = scalarType,
+                DeclareOutputs = outcome.Plan?.DefaultOutputs ?? false,
             });
-            return new GeneratedRegion(point, outcome, code);
+            return new GeneratedRegion(point, outcome, code) { ScalarType = scalarType };
         }
         catch (InvalidOperationException e)
         {
             diagnostics.Add(new(DiagnosticCodes.InternalError, SourceSpan.At(file.Path, point.RegionLineNumber, point.RegionColumn), $"cannot print the code of macro '{point.MacroName}': {e.Message}"));
             return new GeneratedRegion(point, outcome, null);
         }
+    }
+
+    /// <summary>
+    /// The binding point's <c>//GMac.Type</c>, else the run's scalar type; null (with a diagnostic at
+    /// the line) for a type gmac does not emit or a second Type line.
+    /// </summary>
+    private static string? ScalarTypeOf(BindingPointFile file, BindingPoint point, GenerationContext context, List<Diagnostic> diagnostics)
+    {
+        var lines = point.Specs.OfType<ScalarTypeSpec>().ToList();
+        foreach (var extra in lines.Skip(1))
+            diagnostics.Add(new(DiagnosticCodes.InvalidScalarType, SourceSpan.At(file.Path, extra.Line, extra.Column),
+                $"a second GMac.Type line; the binding point's type is already given at line {lines[0].Line}"));
+        if (lines.Count == 0) return context.DefaultScalarType;
+        var name = lines[0].TypeName;
+        if (!CSharpEmitOptions.ScalarTypes.Contains(name))
+        {
+            var hint = name.ToLowerInvariant() switch
+            {
+                "float" or "single" or "system.single" or "f32" => "; did you mean 'float'?",
+                "double" or "system.double" or "f64" => "; did you mean 'double'?",
+                _ => "",
+            };
+            diagnostics.Add(new(DiagnosticCodes.InvalidScalarType, SourceSpan.At(file.Path, lines[0].Line, lines[0].Column),
+                $"GMac.Type(\"{name}\"): gmac writes code in {string.Join(" or ", CSharpEmitOptions.ScalarTypes)}, not '{name}'{hint}"));
+            return null;
+        }
+        return lines.Count > 1 ? null : name;
     }
 
     /// <summary>

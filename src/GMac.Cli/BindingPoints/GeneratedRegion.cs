@@ -2,5 +2,11 @@ using GMac.Dsl.Generation;
 
 namespace GMac.Cli.BindingPoints;
 
-/// <summary>One binding point after generation: its outcome and, when it succeeded, the emitted C# body.</summary>
-internal sealed record GeneratedRegion(BindingPoint Point, GenerationOutcome? Outcome, string? Code);
+/// <summary>
+/// One binding point after generation: its outcome and, when it succeeded, the emitted C# body in
+/// <see cref="ScalarType"/> (its <c>//GMac.Type</c> line's, else the run's).
+/// </summary>
+internal sealed record GeneratedRegion(BindingPoint Point, GenerationOutcome? Outcome, string? Code)
+{
+    public string ScalarType { get; init; } = "double";
+}

@@ -25,6 +25,9 @@ internal sealed class GenerationContext
 
     public DslProject Project { get; }
 
+    /// <summary>The scalar type of binding points without a <c>//GMac.Type</c> line (<c>--scalar</c>).</summary>
+    public string DefaultScalarType { get; set; } = "double";
+
     /// <summary>The caching simplifier behind the generator (its hits include answers found by identity).</summary>
     public CachingCasAdapter Cas { get; }
 

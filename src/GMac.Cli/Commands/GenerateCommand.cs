@@ -10,7 +10,7 @@ using SafeFiles;
 namespace GMac.Cli.Commands;
 
 /// <summary>
-/// <c>gmac generate [PATH…] --dsl DIR [--check] [--stats] [--cache DIR]</c>: rewrites every
+/// <c>gmac generate [PATH…] --dsl DIR [--check] [--stats] [--cache DIR] [--scalar float|double]</c>: rewrites every
 /// binding point under the paths; with <c>--check</c> only reports files that are out of date.
 /// </summary>
 internal static class GenerateCommand
@@ -22,7 +22,8 @@ internal static class GenerateCommand
         var check = new Option<bool>("--check") { Description = "write nothing; exit 1 if any region is out of date" };
         var stats = SharedOptions.Stats("begin each region with a comment counting its operations");
         var cache = SharedOptions.Cache();
-        var command = new Command("generate", "Rewrite the binding points (#region GMac blocks) of C# files.") { paths, dsl, check, stats, cache };
+        var scalar = SharedOptions.Scalar("the scalar type of the code where a binding point has no //GMac.Type line (default: double)");
+        var command = new Command("generate", "Rewrite the binding points (#region GMac blocks) of C# files.") { paths, dsl, check, stats, cache, scalar };
         UnknownOptions.RejectIn(paths, command);
         command.SetAction(r =>
         {
@@ -30,6 +31,7 @@ internal static class GenerateCommand
             var error = r.InvocationConfiguration.Error;
             var context = DslLoader.Load(r.GetValue(dsl)!, r.GetValue(cache), error);
             if (context is null) return ExitCodes.Diagnostics;
+            context.DefaultScalarType = r.GetValue(scalar)!;
             return Execute(context, SharedOptions.PathsOrCurrent(r.GetValue(paths)), r.GetValue(check), r.GetValue(stats), r.InvocationConfiguration.Output, error, watch);
         });
         return command;

@@ -20,6 +20,19 @@ internal static class SharedOptions
 
     public static Option<bool> Stats(string what) => new("--stats") { Description = what };
 
+    /// <summary>The scalar type of generated code; a binding point's <c>//GMac.Type</c> line overrides it.</summary>
+    public static Option<string> Scalar(string what)
+    {
+        var option = new Option<string>("--scalar")
+        {
+            Description = what,
+            HelpName = string.Join("|", GMac.Core.CodeGeneration.CSharpEmitOptions.ScalarTypes),
+            DefaultValueFactory = _ => "double",
+        };
+        option.AcceptOnlyFromAmong([.. GMac.Core.CodeGeneration.CSharpEmitOptions.ScalarTypes]);
+        return option;
+    }
+
     /// <summary>The C# files or folders to work on; none means the current folder.</summary>
     public static Argument<string[]> Paths(string what) => new("PATH")
     {

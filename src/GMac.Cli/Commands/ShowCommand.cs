@@ -9,8 +9,9 @@ using GMac.Dsl.Generation;
 namespace GMac.Cli.Commands;
 
 /// <summary>
-/// <c>gmac show MACRO --dsl DIR [--bind …] [--min EXPR=V] [--max EXPR=V] [--stats]</c>: prints the
-/// code generated for one macro, with default bindings (<c>u_e1</c>, <c>w_e1</c>, …) unless given.
+/// <c>gmac show MACRO --dsl DIR [--bind …] [--min EXPR=V] [--max EXPR=V] [--stats] [--scalar float|double]</c>:
+/// prints the code generated for one macro, with default bindings (<c>u_e1</c>, <c>w_e1</c>, …) unless
+/// given; when only inputs are bound, the outputs get the default names.
 /// </summary>
 internal static class ShowCommand
 {
@@ -29,13 +30,15 @@ internal static class ShowCommand
         ];
         var stats = SharedOptions.Stats("begin the code with a comment counting its operations");
         var cache = SharedOptions.Cache();
+        var scalar = SharedOptions.Scalar("the scalar type of the printed code (default: double)");
         var command = new Command("show", "Print the code generated for one macro.") { macro, dsl };
         UnknownOptions.RejectIn(macro, command);
         foreach (var option in specOptions) command.Options.Add(option);
         command.Options.Add(stats);
         command.Options.Add(cache);
+        command.Options.Add(scalar);
         command.SetAction(r => Run(r.GetValue(macro)!, r.GetValue(dsl)!, r.GetValue(cache), SpecsInOrder(r, specOptions), r.GetValue(stats),
-            r.InvocationConfiguration.Output, r.InvocationConfiguration.Error));
+            r.GetValue(scalar)!, r.InvocationConfiguration.Output, r.InvocationConfiguration.Error));
         return command;
     }
 
@@ -64,7 +67,8 @@ internal static class ShowCommand
         return values;
     }
 
-    private static int Run(string macro, string dsl, string? cache, List<(string Option, string Value)> values, bool stats, TextWriter output, TextWriter error)
+    private static int Run(string macro, string dsl, string? cache, List<(string Option, string Value)> values, bool stats, string scalarType,
+        TextWriter output, TextWriter error)
     {
         // Every value was checked by the option's validator.
         var specs = values.Select((v, i) => ParseSpec(v.Option, v.Value, i + 1)!).ToList();
@@ -103,6 +107,9 @@ internal static class ShowCommand
         {
             NewLine = Environment.NewLine,
             IncludeStatistics = stats,
+            ScalarType = scalarType,
+            // Outputs no --bind names get default names, declared as the region would declare them.
+            DeclareOutputs = outcome.Plan?.DefaultOutputs ?? false,
         }));
         return ExitCodes.Success;
     }

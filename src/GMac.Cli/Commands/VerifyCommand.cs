@@ -8,7 +8,7 @@ using GMac.Dsl.Generation;
 namespace GMac.Cli.Commands;
 
 /// <summary>
-/// <c>gmac verify [PATH…] --dsl DIR [--seed N] [--cache DIR]</c>: compiles the code of every binding
+/// <c>gmac verify [PATH…] --dsl DIR [--seed N] [--cache DIR] [--scalar float|double]</c>: compiles the code of every binding
 /// point inside its file and project, and compares it with the numeric engine on random inputs.
 /// </summary>
 internal static class VerifyCommand
@@ -19,13 +19,15 @@ internal static class VerifyCommand
         var dsl = SharedOptions.Dsl();
         var seed = new Option<int>("--seed") { Description = "seed of the random inputs", HelpName = "N", DefaultValueFactory = _ => 1 };
         var cache = SharedOptions.Cache();
-        var command = new Command("verify", "Compile each binding point in memory and check it against the numeric engine.") { paths, dsl, seed, cache };
+        var scalar = SharedOptions.Scalar("the scalar type the regions were generated in where a binding point has no //GMac.Type line (default: double)");
+        var command = new Command("verify", "Compile each binding point in memory and check it against the numeric engine.") { paths, dsl, seed, cache, scalar };
         UnknownOptions.RejectIn(paths, command);
         command.SetAction(r =>
         {
             var error = r.InvocationConfiguration.Error;
             var context = DslLoader.Load(r.GetValue(dsl)!, r.GetValue(cache), error);
             if (context is null) return ExitCodes.Diagnostics;
+            context.DefaultScalarType = r.GetValue(scalar)!;
             return Execute(context, SharedOptions.PathsOrCurrent(r.GetValue(paths)), r.GetValue(seed), r.InvocationConfiguration.Output, error);
         });
         return command;
@@ -70,7 +72,7 @@ internal static class VerifyCommand
         }
 
         var remapped = regions.Select(r => KernelCompiler.Remap(r.Region.Outcome!.Result!.Block, r.Region.Outcome.Plan!.InputTexts.Keys)).ToList();
-        var kernels = KernelCompiler.Compile(remapped);
+        var kernels = KernelCompiler.Compile(remapped, regions.Select(r => r.Region.ScalarType).ToList());
         var passed = 0;
         for (var k = 0; k < regions.Count; k++)
         {
@@ -84,7 +86,7 @@ internal static class VerifyCommand
                 continue;
             }
             var plan = region.Outcome!.Plan!;
-            var tolerance = RegionVerifier.UsesDifferentiation(context.Project, plan.Macro) ? RegionVerifier.DifferentiationTolerance : RegionVerifier.Tolerance;
+            var tolerance = RegionVerifier.ToleranceFor(RegionVerifier.UsesDifferentiation(context.Project, plan.Macro), kernel.IsSingle);
             var assumptions = point.Specs.OfType<AssumptionSpec>().ToList();
             var normalized = NormalizedAtoms(context, point, plan);
             var result = RegionVerifier.Verify(kernel, plan, assumptions, normalized, tolerance, seed + k);

@@ -37,23 +37,29 @@ internal static class KernelCompiler
     /// Compiles the blocks together (one compilation is much cheaper than many); returns a kernel or
     /// the compiler's first error for each block.
     /// </summary>
-    public static IReadOnlyList<(CompiledKernel? Kernel, string? Error)> Compile(IReadOnlyList<(CodeBlock Block, List<string> Inputs, List<string> Outputs)> blocks)
+    /// <param name="scalarTypes">The scalar type of each block (<c>double</c> or <c>float</c>); all double when null.</param>
+    public static IReadOnlyList<(CompiledKernel? Kernel, string? Error)> Compile(IReadOnlyList<(CodeBlock Block, List<string> Inputs, List<string> Outputs)> blocks,
+        IReadOnlyList<string>? scalarTypes = null)
     {
-        var sources = blocks.Select((b, k) => Source(b.Block, k)).ToList();
+        string TypeOf(int k) => scalarTypes?[k] ?? "double";
+        var sources = blocks.Select((b, k) => Source(b.Block, k, TypeOf(k))).ToList();
         if (TryCompile(sources, out var assembly, out _))
-            return blocks.Select((b, k) => ((CompiledKernel?)Load(assembly!, k, b.Inputs, b.Outputs), (string?)null)).ToList();
+            return blocks.Select((b, k) => ((CompiledKernel?)Load(assembly!, k, b.Inputs, b.Outputs, TypeOf(k)), (string?)null)).ToList();
         // Something does not compile: find which, one block at a time.
         return blocks.Select((b, k) => TryCompile([sources[k]], out var single, out var error)
-            ? ((CompiledKernel?)Load(single!, k, b.Inputs, b.Outputs), (string?)null)
+            ? ((CompiledKernel?)Load(single!, k, b.Inputs, b.Outputs, TypeOf(k)), (string?)null)
             : (null, error)).ToList();
     }
 
-    private static string Source(CodeBlock block, int index)
+    private static string Source(CodeBlock block, int index, string scalarType)
     {
-        var body = CSharpEmitter.Emit(block, new CSharpEmitOptions { Indent = "        ", NewLine = "\n", IsNameTaken = n => n.StartsWith("__", StringComparison.Ordinal) });
+        var body = CSharpEmitter.Emit(block, new CSharpEmitOptions
+        {
+            Indent = "        ", NewLine = "\n", ScalarType = scalarType, IsNameTaken = n => n.StartsWith("__", StringComparison.Ordinal),
+        });
         var sb = new StringBuilder();
         sb.Append("public static class GMacVerify").Append(index).Append("\n{\n");
-        sb.Append("    public static void Run(double[] __in, double[] __out)\n    {\n");
+        sb.Append("    public static void Run(").Append(scalarType).Append("[] __in, ").Append(scalarType).Append("[] __out)\n    {\n");
         sb.Append(body);
         sb.Append("    }\n}\n");
         return sb.ToString();
@@ -79,9 +85,19 @@ internal static class KernelCompiler
         return true;
     }
 
-    private static CompiledKernel Load(Assembly assembly, int index, List<string> inputs, List<string> outputs)
+    private static CompiledKernel Load(Assembly assembly, int index, List<string> inputs, List<string> outputs, string scalarType)
     {
         var method = assembly.GetType($"GMacVerify{index}")!.GetMethod("Run")!;
-        return new CompiledKernel(method.CreateDelegate<Action<double[], double[]>>(), inputs, outputs);
+        if (scalarType != "float") return new CompiledKernel(method.CreateDelegate<Action<double[], double[]>>(), inputs, outputs);
+        var run = method.CreateDelegate<Action<float[], float[]>>();
+        // Inputs are rounded to float on the way in; outputs left unassigned stay NaN, as in a double kernel.
+        return new CompiledKernel((input, output) =>
+        {
+            var singleInput = Array.ConvertAll(input, x => (float)x);
+            var singleOutput = new float[output.Length];
+            Array.Fill(singleOutput, float.NaN);
+            run(singleInput, singleOutput);
+            for (var j = 0; j < output.Length; j++) output[j] = singleOutput[j];
+        }, inputs, outputs) { IsSingle = true };
     }
 }

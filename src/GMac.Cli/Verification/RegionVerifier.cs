@@ -18,6 +18,17 @@ internal static partial class RegionVerifier
     /// <summary>Finite differences (macros using <c>diff</c>) agree with exact derivatives only to about this.</summary>
     public const double DifferentiationTolerance = 1e-4;
 
+    /// <summary>
+    /// Float code keeps about 7 digits; after the cancellations of a typical kernel (sums of
+    /// products of inputs near 1) a few more go, so float regions are held to 1e-4, some
+    /// thousand float roundings: far tighter than any wrong formula, far looser than rounding.
+    /// </summary>
+    public const double SingleTolerance = 1e-4;
+
+    /// <summary>The tolerance for a region: its macro's (exact or differentiated) widened to float accuracy for float code.</summary>
+    public static double ToleranceFor(bool differentiates, bool single) =>
+        Math.Max(differentiates ? DifferentiationTolerance : Tolerance, single ? SingleTolerance : 0.0);
+
     public static VerificationResult Verify(CompiledKernel kernel, BindingPointPlan plan, IReadOnlyList<AssumptionSpec> assumptions,
         IReadOnlyList<IReadOnlyList<string>> normalizedGroups, double tolerance, int seed, int samples = 5)
     {
@@ -41,6 +52,8 @@ internal static partial class RegionVerifier
                 var norm = Math.Sqrt(group.Sum(n => values[n] * values[n]));
                 if (norm > 0) foreach (var n in group) values[n] /= norm;
             }
+            // A float kernel sees its inputs rounded to float; the reference gets the same inputs.
+            if (kernel.IsSingle) foreach (var name in values.Keys.ToList()) values[name] = (float)values[name];
             var reference = plan.NumericReference(values);
             if (reference.Values.Any(v => !double.IsFinite(v))) continue;
             for (var i = 0; i < input.Length; i++) input[i] = values.TryGetValue(kernel.Inputs[i], out var v) ? v : 0.0;

@@ -12,6 +12,12 @@ public static partial class CSharpEmitter
     public static string Emit(CodeBlock block, CSharpEmitOptions? options = null)
     {
         options ??= new CSharpEmitOptions();
+        var single = options.ScalarType switch
+        {
+            "double" => false,
+            "float" => true,
+            _ => throw new InvalidOperationException($"No C# code for scalar type '{options.ScalarType}'; expected {string.Join(" or ", CSharpEmitOptions.ScalarTypes)}."),
+        };
         var temps = block.Temporaries.Select(t => t.Target).Distinct().ToList();
         // The block's own C# text (bound inputs and output targets) names things the temporaries must not hide.
         var bound = block.InputText.Values.Concat(block.OutputTargets.Values)
@@ -26,7 +32,9 @@ public static partial class CSharpEmitter
             : block.InputText.TryGetValue(name, out var input) ? (IsSimple(input) ? input.Trim() : $"({input.Trim()})")
             : throw new InvalidOperationException($"'{name}' is neither an input nor a temporary of the block.");
 
-        string Print(Expr e) => ExprPrinter.Print(e, VariableText, CSharpFunction);
+        string Print(Expr e) => single
+            ? ExprPrinter.Print(e, VariableText, f => SingleFunction(CSharpFunction(f)), SingleLiteral.Of)
+            : ExprPrinter.Print(e, VariableText, CSharpFunction);
 
         var sb = new StringBuilder();
         if (options.IncludeStatistics)
@@ -38,7 +46,9 @@ public static partial class CSharpEmitter
             switch (s)
             {
                 case AssignmentStatement { IsOutput: true } o:
-                    sb.Append(block.OutputTargets[o.Target].Trim()).Append(" = ").Append(Print(o.Value)).Append(';');
+                    var target = block.OutputTargets[o.Target].Trim();
+                    if (options.DeclareOutputs && declared.Add(target)) sb.Append(options.ScalarType).Append(' ');
+                    sb.Append(target).Append(" = ").Append(Print(o.Value)).Append(';');
                     break;
                 case AssignmentStatement t:
                     var name = tempName[t.Target];
@@ -78,6 +88,9 @@ public static partial class CSharpEmitter
         "pow" => "Math.Pow",
         _ => throw new InvalidOperationException($"No C# function for '{f}'."),
     };
+
+    /// <summary><c>Math.Sin</c> → <c>MathF.Sin</c>: the float overloads, so no value is widened to double.</summary>
+    private static string SingleFunction(string doubleFunction) => "MathF" + doubleFunction["Math".Length..];
 
     /// <summary>An identifier, member access, element access or number: safe to use without parentheses.</summary>
     private static bool IsSimple(string text) => SimpleExpression().IsMatch(text.Trim());

@@ -11,10 +11,11 @@ public static class ExprPrinter
 {
     private const int SumLevel = 1, ProductLevel = 2, UnaryLevel = 3, PrimaryLevel = 4;
 
-    public static string Print(Expr e, Func<string, string> variableText, Func<string, string>? functionName = null)
+    /// <param name="literal">Prints a constant; by default as a double literal (another scalar type has its own).</param>
+    public static string Print(Expr e, Func<string, string> variableText, Func<string, string>? functionName = null, Func<ConstantExpr, string>? literal = null)
     {
         var sb = new StringBuilder();
-        Write(sb, e, variableText, functionName ?? (f => f));
+        Write(sb, e, variableText, functionName ?? (f => f), literal ?? (c => Literal(c.Value)));
         return sb.ToString();
     }
 
@@ -35,12 +36,12 @@ public static class ExprPrinter
         _ => PrimaryLevel,
     };
 
-    private static void Write(StringBuilder sb, Expr e, Func<string, string> variableText, Func<string, string> functionName)
+    private static void Write(StringBuilder sb, Expr e, Func<string, string> variableText, Func<string, string> functionName, Func<ConstantExpr, string> literal)
     {
         switch (e)
         {
             case ConstantExpr c:
-                sb.Append(Literal(c.Value));
+                sb.Append(literal(c));
                 break;
             case VariableExpr v:
                 sb.Append(variableText(v.Name));
@@ -54,18 +55,18 @@ public static class ExprPrinter
                     var t = terms[i];
                     if (i == 0)
                     {
-                        WriteOperand(sb, t, SumLevel, variableText, functionName);
+                        WriteOperand(sb, t, SumLevel, variableText, functionName, literal);
                         continue;
                     }
                     if (IsNegativeTerm(t))
                     {
                         sb.Append(" - ");
-                        WriteOperand(sb, NegatedTerm(t), SumLevel + 1, variableText, functionName);
+                        WriteOperand(sb, NegatedTerm(t), SumLevel + 1, variableText, functionName, literal);
                     }
                     else
                     {
                         sb.Append(" + ");
-                        WriteOperand(sb, t, SumLevel, variableText, functionName);
+                        WriteOperand(sb, t, SumLevel, variableText, functionName, literal);
                     }
                 }
                 break;
@@ -74,29 +75,29 @@ public static class ExprPrinter
                 for (var i = 0; i < p.Children.Count; i++)
                 {
                     if (i > 0) sb.Append(" * ");
-                    WriteOperand(sb, p.Children[i], i == 0 ? ProductLevel : ProductLevel + 1, variableText, functionName);
+                    WriteOperand(sb, p.Children[i], i == 0 ? ProductLevel : ProductLevel + 1, variableText, functionName, literal);
                 }
                 break;
             case QuotientExpr q:
-                WriteOperand(sb, q.Numerator, ProductLevel, variableText, functionName);
+                WriteOperand(sb, q.Numerator, ProductLevel, variableText, functionName, literal);
                 sb.Append(" / ");
-                WriteOperand(sb, q.Denominator, ProductLevel + 1, variableText, functionName);
+                WriteOperand(sb, q.Denominator, ProductLevel + 1, variableText, functionName, literal);
                 break;
             case NegateExpr n:
                 sb.Append('-');
-                WriteOperand(sb, n.Operand, n.Operand is NegateExpr or ConstantExpr { Value: < 0 } ? PrimaryLevel + 1 : UnaryLevel, variableText, functionName);
+                WriteOperand(sb, n.Operand, n.Operand is NegateExpr or ConstantExpr { Value: < 0 } ? PrimaryLevel + 1 : UnaryLevel, variableText, functionName, literal);
                 break;
             case PowerExpr pw:
                 sb.Append(functionName("pow")).Append('(');
-                Write(sb, pw.Base, variableText, functionName);
-                sb.Append(", ").Append(Literal(pw.Exponent)).Append(')');
+                Write(sb, pw.Base, variableText, functionName, literal);
+                sb.Append(", ").Append(literal(new ConstantExpr(pw.Exponent))).Append(')');
                 break;
             case CallExpr call:
                 sb.Append(functionName(call.Function)).Append('(');
                 for (var i = 0; i < call.Children.Count; i++)
                 {
                     if (i > 0) sb.Append(", ");
-                    Write(sb, call.Children[i], variableText, functionName);
+                    Write(sb, call.Children[i], variableText, functionName, literal);
                 }
                 sb.Append(')');
                 break;
@@ -107,13 +108,15 @@ public static class ExprPrinter
 
     private static bool IsNegativeTerm(Expr t) => t is NegateExpr || t is ConstantExpr { Value: < 0 };
 
-    private static Expr NegatedTerm(Expr t) => t is NegateExpr n ? n.Operand : new ConstantExpr(-((ConstantExpr)t).Value);
+    // The exact value goes with the negated constant, so a float literal is still rounded from it.
+    private static Expr NegatedTerm(Expr t) => t is NegateExpr n ? n.Operand
+        : (ConstantExpr)t is { Exact: { } r } ? ConstantExpr.From(-r) : new ConstantExpr(-((ConstantExpr)t).Value);
 
-    private static void WriteOperand(StringBuilder sb, Expr e, int minimumLevel, Func<string, string> variableText, Func<string, string> functionName)
+    private static void WriteOperand(StringBuilder sb, Expr e, int minimumLevel, Func<string, string> variableText, Func<string, string> functionName, Func<ConstantExpr, string> literal)
     {
         var parens = Level(e) < minimumLevel;
         if (parens) sb.Append('(');
-        Write(sb, e, variableText, functionName);
+        Write(sb, e, variableText, functionName, literal);
         if (parens) sb.Append(')');
     }
 }

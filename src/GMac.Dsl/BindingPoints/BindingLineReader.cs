@@ -7,8 +7,8 @@ using Microsoft.CodeAnalysis.CSharp.Syntax;
 namespace GMac.Dsl.BindingPoints;
 
 /// <summary>
-/// Reads one <c>//GMac.Bind(…);</c>, <c>//GMac.AssumeMin(…);</c> or <c>//GMac.AssumeMax(…);</c>
-/// line as the C# invocation it looks like, so string escapes and verbatim strings mean what they
+/// Reads one <c>//GMac.Bind(…);</c>, <c>//GMac.AssumeMin(…);</c>, <c>//GMac.AssumeMax(…);</c> or
+/// <c>//GMac.Type("float");</c> line as the C# invocation it looks like, so string escapes and verbatim strings mean what they
 /// mean in C#. A string-literal value is a template (its <c>&lt;…&gt;</c> parts are C# text); any
 /// other expression is bare C#. This is the one reader of the syntax: gmac and the benchmark
 /// report both go through it.
@@ -50,7 +50,7 @@ public static class BindingLineReader
                 Expression: MemberAccessExpressionSyntax { Expression: IdentifierNameSyntax { Identifier.ValueText: "GMac" } } member,
             } call)
         {
-            error = $"'//{code.Trim()}' is not a call of GMac.Bind, GMac.AssumeMin or GMac.AssumeMax";
+            error = $"'//{code.Trim()}' is not a call of GMac.Bind, GMac.AssumeMin, GMac.AssumeMax or GMac.Type";
             return null;
         }
         var args = call.ArgumentList.Arguments;
@@ -99,8 +99,13 @@ public static class BindingLineReader
             case "AssumeMin" or "AssumeMax":
                 error = $"GMac.{command} takes 2 arguments (expression, bound), not {args.Count}";
                 return null;
+            case "Type" when args.Count == 1 && StringValue(args[0]) is { } typeName:
+                return new ScalarTypeSpec(typeName.Trim(), line, column);
+            case "Type":
+                error = "GMac.Type takes one string, the scalar type of the code: GMac.Type(\"float\") or GMac.Type(\"double\")";
+                return null;
             default:
-                error = $"unknown binding command 'GMac.{command}'; expected Bind, AssumeMin or AssumeMax";
+                error = $"unknown binding command 'GMac.{command}'; expected Bind, AssumeMin, AssumeMax or Type";
                 return null;
         }
     }

@@ -55,7 +55,7 @@ public static class DiagnosticCodes
     public static readonly DiagnosticDescriptor NotACoefficient = new("GMAC0304", Error, "a binding names a coefficient that the parameter's class does not leave free", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor BoundTwice = new("GMAC0305", Error, "a coefficient is bound twice", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor UnusedAssumption = new("GMAC0306", Error, "an AssumeMin or AssumeMax names an expression no binding reads", ReportedBy.Generation);
-    public static readonly DiagnosticDescriptor NoOutputBound = new("GMAC0307", Error, "a binding point binds no output, so there is nothing to generate", ReportedBy.Generation);
+    // GMAC0307 (no output bound) is retired: a binding point that binds only inputs gets default output names.
     public static readonly DiagnosticDescriptor InvalidBindingValue = new("GMAC0308", Error, "a bound value is neither a number, a C# expression in angle brackets, nor a scalar expression of these", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor ClassBindingMismatch = new("GMAC0309", Error, "a class binding is unknown or on another frame than the parameter", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor CannotGenerate = new("GMAC0310", Error, "the macro cannot be evaluated for these bindings", ReportedBy.Generation);
@@ -77,6 +77,7 @@ public static class DiagnosticCodes
     public static readonly DiagnosticDescriptor OutOfDate = new("GMAC0410", Error, "with --check: a binding point differs from what gmac generates", ReportedBy.Generate);
     public static readonly DiagnosticDescriptor SkippedSourceFile = new("GMAC0411", Warning, "a special file (device, pipe, socket) among the C# paths is skipped", ReportedBy.Generate | ReportedBy.Build);
     public static readonly DiagnosticDescriptor NotAnExpression = new("GMAC0412", Error, "the C# text of a binding is not exactly one C# expression", ReportedBy.Generation);
+    public static readonly DiagnosticDescriptor InvalidScalarType = new("GMAC0413", Error, "a GMac.Type line names a scalar type other than float or double, or is given twice", ReportedBy.SourceFiles);
     public static readonly DiagnosticDescriptor DisagreesWithEngine = new("GMAC0420", Error, "the generated code disagrees with the numeric engine", ReportedBy.Verify);
     public static readonly DiagnosticDescriptor KernelDoesNotCompile = new("GMAC0421", Error, "the generated code does not compile on its own", ReportedBy.Verify);
     public static readonly DiagnosticDescriptor DoesNotCompileInProject = new("GMAC0422", Error, "the generated code does not compile in its file and project", ReportedBy.Verify);

@@ -12,4 +12,11 @@ public sealed record BindingPointPlan(
     MacroSymbol Macro,
     CodeGenerationRequest Request,
     IReadOnlyDictionary<string, string> InputTexts,
-    Func<IReadOnlyDictionary<string, double>, IReadOnlyDictionary<string, double>> NumericReference);
+    Func<IReadOnlyDictionary<string, double>, IReadOnlyDictionary<string, double>> NumericReference)
+{
+    /// <summary>
+    /// No binding named an output, so every output coefficient is written to its default name
+    /// (<c>y_e1</c>), which the emitted code declares.
+    /// </summary>
+    public bool DefaultOutputs { get; init; }
+}

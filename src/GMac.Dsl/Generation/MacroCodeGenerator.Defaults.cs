@@ -9,11 +9,14 @@ public sealed partial class MacroCodeGenerator
     /// <c>u_e1</c> and write every output coefficient to one such as <c>w_e1_e2</c>: what
     /// <c>gmac show</c> uses when no binding is given, and what benchmarks of generation use.
     /// </summary>
-    public IReadOnlyList<BindingSpec> DefaultBindings(string macroName)
+    public IReadOnlyList<BindingSpec> DefaultBindings(string macroName) =>
+        _project.Model.Macros.TryGetValue(macroName, out var macro) ? [.. DefaultBindings(macro, inputs: true), .. DefaultBindings(macro, inputs: false)] : [];
+
+    /// <summary>The default bindings of the macro's inputs, or of its outputs (every coefficient of their classes).</summary>
+    private List<BindingSpec> DefaultBindings(Semantics.MacroSymbol macro, bool inputs)
     {
-        if (!_project.Model.Macros.TryGetValue(macroName, out var macro)) return [];
         var bindings = new List<BindingSpec>();
-        foreach (var parameter in macro.Inputs.Concat(macro.Outputs))
+        foreach (var parameter in inputs ? macro.Inputs : macro.Outputs)
         {
             var frame = _frames[parameter.Class!.Frame];
             var blades = parameter.Kind == Semantics.VariableKind.Input ? parameter.Class.VariableBlades : parameter.Class.AllBlades;

@@ -116,11 +116,12 @@ public sealed partial class MacroCodeGenerator
             assumptions = WithBound(assumptions, variable, a.Expression, a.Value, a.IsMinimum, a, errors);
         }
         if (errors.Count > 0) return null;
-        if (outputs.Count == 0)
-        {
-            errors.Add(Problem(DiagnosticCodes.NoOutputBound, $"the binding point binds no output of macro '{macroName}', so there is nothing to generate", regionLine, 1));
-            return null;
-        }
+        // Binding only inputs is enough: every output coefficient then goes to its default name.
+        var defaultOutputs = outputs.Count == 0;
+        if (defaultOutputs)
+            foreach (var spec in DefaultBindings(macro, inputs: false))
+                BindCoefficient(macro, (CoefficientBindingSpec)spec with { Line = regionLine, Column = 1 }, atoms, inputValues, outputs, outputTargets, errors);
+        if (errors.Count > 0) return null;
 
         // A variable coefficient that no binding supplies is zero.
         var inputs = MacroInputs.Build(_frames, SymbolicDomain.Instance, macro, (input, blade) => inputValues.GetValueOrDefault((input, blade), Scalar.Zero));
@@ -151,7 +152,10 @@ public sealed partial class MacroCodeGenerator
             Simplify = s => _cas.Simplify(s, assumptions),
             Join = join,
         };
-        return new BindingPointPlan(macro, request, atoms.Texts, values => NumericReference(macro, inputValues, outputs, values));
+        return new BindingPointPlan(macro, request, atoms.Texts, values => NumericReference(macro, inputValues, outputs, values))
+        {
+            DefaultOutputs = defaultOutputs,
+        };
     }
 
     /// <summary>
