@@ -1,8 +1,8 @@
 namespace GMac.Benchmarks.Accuracy;
 
 /// <summary>
-/// The errors of one kernel on one input family: per item the largest relative error of a
-/// component (see <see cref="AccuracyHarness.ItemError"/>), summarised over the batch.
+/// The errors of one kernel on one input family: per item the normwise relative error
+/// (see <see cref="AccuracyHarness.ItemError"/>), summarised over the batch.
 /// </summary>
 public sealed record AccuracyRow(string Kernel, InputFamily Family, int Items, double GeneratedMedian, double GeneratedMax, double HandMedian, double HandMax)
 {

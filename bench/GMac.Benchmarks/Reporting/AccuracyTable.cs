@@ -23,8 +23,7 @@ public static class AccuracyTable
         Line();
         Line($"Each kernel runs on {itemsPerFamily} inputs of each family (seed {seed}): its random inputs and ill-conditioned ones. " +
              "The reference is exact: the kernel's binding point generated from `dsl/` and evaluated on rationals (math functions to 200 bits), " +
-             "on the very doubles the variants were given. The error of an item is the largest relative error of its components, " +
-             $"a component under {AccuracyHarness.ComponentFloor:0e0} of the largest one measured against that fraction of the largest. " +
+             "on the very doubles the variants were given. The error of an item is normwise: the largest error of a component over the largest component of the exact output. " +
              $"The ratio compares the worst items, each at least {AccuracyRow.Floor:0.0e0} (two units of 2⁻⁵²).");
         Line();
         Line("| kernel | family | inputs | generated median | generated max | hand median | hand max | generated / hand | within 10× |");

@@ -13,8 +13,9 @@ internal static class TranslationGroups
 {
     /// <summary>
     /// Disjoint groups of at least two of <paramref name="candidates"/>, each in the order the
-    /// candidates were given (the first one is the group's anchor). Groups grow greedily: a
-    /// variable joins when it makes the summed derivative shorter, until that sum is zero.
+    /// candidates were given (the first one is the group's anchor). Groups grow greedily: the
+    /// variable that leaves the summed derivative shortest joins, as long as it does not make the
+    /// sum longer, until that sum is zero (a translation direction) or nothing fits.
     /// </summary>
     public static List<List<string>> Find(Scalar polynomial, IReadOnlyList<string> candidates)
     {
@@ -41,7 +42,7 @@ internal static class TranslationGroups
                 foreach (var v in free)
                 {
                     var next = sum + derivatives[v];
-                    if (next.Terms.Count < (bestSum ?? sum).Terms.Count)
+                    if (next.Terms.Count <= sum.Terms.Count && next.Terms.Count < (bestSum?.Terms.Count ?? int.MaxValue))
                     {
                         best = v;
                         bestSum = next;
