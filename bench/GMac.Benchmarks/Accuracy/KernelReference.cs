@@ -1,6 +1,7 @@
 using GMac.Benchmarks.Generation;
 using GMac.Benchmarks.Kernels;
 using GMac.Core.CodeGeneration;
+using GMac.Core.CodeGeneration.Accuracy;
 using GMac.Core.Numerics;
 using GMac.Dsl.Generation;
 
@@ -8,7 +9,7 @@ namespace GMac.Benchmarks.Accuracy;
 
 /// <summary>
 /// The exact outputs of a kernel for any input: its binding point regenerated from the library and
-/// run by <see cref="ExactBlockEvaluator"/>, inputs read from and outputs written into the
+/// run by <see cref="ExactEvaluator"/> with <see cref="HighPrecision"/> functions, inputs read from and outputs written into the
 /// kernel's own structs through the binding texts. Nothing here is specific to one kernel.
 /// </summary>
 public sealed class KernelReference
@@ -61,7 +62,7 @@ public sealed class KernelReference
     {
         var input = _subject.Input(index);
         var values = _inputs.ToDictionary(i => i.Variable, i => Rational.FromDouble(StructPath.Read(input, i.Path)), StringComparer.Ordinal);
-        if (ExactBlockEvaluator.Evaluate(_block, values) is not { } outputs) return null;
+        if (ExactEvaluator.Evaluate(_block, values, HighPrecision.Call) is not { } outputs) return null;
         var result = new Rational[_components];
         foreach (var (variable, component) in _outputs) result[component] = outputs[variable];
         return result;
