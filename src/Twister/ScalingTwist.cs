@@ -118,14 +118,14 @@ public sealed class ScalingTwist : Twist
         y.y = x.y * tmp0 - c.y * tmp1;
         y.z = x.z * tmp0 - c.z * tmp1;
         double tmp2 = x.x - c.x;
-        yu.x = tmp0 * (ru * tmp2 + xu.x);
+        yu.x = tmp0 * (tmp2 * ru + xu.x);
         double tmp3 = c.y - x.y;
-        yu.y = tmp0 * (xu.y - ru * tmp3);
+        yu.y = tmp0 * (xu.y - tmp3 * ru);
         double tmp4 = c.z - x.z;
-        yu.z = tmp0 * (xu.z - ru * tmp4);
-        yv.x = tmp0 * (rv * tmp2 + xv.x);
-        yv.y = tmp0 * (xv.y - rv * tmp3);
-        yv.z = tmp0 * (xv.z - rv * tmp4);
+        yu.z = tmp0 * (xu.z - tmp4 * ru);
+        yv.x = tmp0 * (tmp2 * rv + xv.x);
+        yv.y = tmp0 * (xv.y - tmp3 * rv);
+        yv.z = tmp0 * (xv.z - tmp4 * rv);
         #endregion
 
         p = y;

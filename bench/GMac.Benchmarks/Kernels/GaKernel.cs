@@ -4,7 +4,7 @@ namespace GMac.Benchmarks.Kernels;
 /// Batch plumbing shared by the kernels. Each kernel loops over the batch itself so that its
 /// per-item methods can be inlined: one virtual call per batch, none per item.
 /// </summary>
-public abstract class GaKernel<TIn, TOut> : IGaKernel where TIn : struct where TOut : struct
+public abstract partial class GaKernel<TIn, TOut> : IGaKernel where TIn : struct where TOut : struct
 {
     private TIn[] _inputs = [];
     private readonly Dictionary<Variant, TOut[]> _outputs = [];

@@ -48,7 +48,7 @@ public sealed class HiddenSurfaceKernel : GaKernel<Vec2Triple, double>
         //GMac.Bind("v3.e1", "<t.C.x>");
         //GMac.Bind("v3.e2", "<t.C.y>");
         //GMac.Bind("s.1", "<s>");
-        s = (t.B.x - t.A.x) * (t.A.y - t.C.y) + (t.B.y - t.A.y) * (t.C.x - t.A.x);
+        s = (t.C.x - t.A.x) * (t.B.y - t.A.y) - (t.B.x - t.A.x) * (t.C.y - t.A.y);
         #endregion
     }
 

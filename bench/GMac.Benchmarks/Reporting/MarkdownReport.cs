@@ -7,7 +7,8 @@ namespace GMac.Benchmarks.Reporting;
 /// <summary>Writes <c>ga-apps.md</c>: the §7.1 comparison, the goals, and the generation suite.</summary>
 public static class MarkdownReport
 {
-    public static string Render(IReadOnlyList<KernelRow> rows, GenerationTimings? generation, string mode, string command, string chartFileName)
+    public static string Render(IReadOnlyList<KernelRow> rows, GenerationTimings? generation, string mode, string command, string chartFileName,
+        IReadOnlyList<Accuracy.AccuracyRow>? accuracy = null, string? accuracySection = null)
     {
         var sb = new StringBuilder();
         void Line(string text = "") => sb.Append(text).Append('\n');
@@ -58,6 +59,7 @@ public static class MarkdownReport
             var slow = generation.Macros.Count(m => m.ColdMs >= 100);
             Line($"| every single macro generated in < 100 ms cold | slowest {slowest.Macro} {F(slowest.ColdMs)} ms; {slow} of {generation.Macros.Count} at or above 100 ms | {YesNo(slow == 0)} |");
         }
+        if (accuracy is { Count: > 0 }) Line(AccuracyTable.GoalRow(accuracy));
         Line();
 
         Line("## Operation counts");
@@ -70,6 +72,8 @@ public static class MarkdownReport
         foreach (var r in rows)
             Line($"| {r.Kernel.MacroName} | {(r.GeneratedOperations is { } g ? g.ToString() : $"error: {r.GenerationError}")} | {r.Kernel.HandOperations} |");
         Line();
+
+        if (accuracySection is not null) sb.Append(accuracySection);
 
         if (generation is not null)
         {

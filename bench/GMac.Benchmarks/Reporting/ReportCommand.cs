@@ -1,3 +1,4 @@
+using GMac.Benchmarks.Accuracy;
 using GMac.Benchmarks.Applications;
 using GMac.Benchmarks.Generation;
 using GMac.Benchmarks.Kernels;
@@ -75,6 +76,11 @@ public static class ReportCommand
             }
         }).ToArray();
 
+        var accuracyItems = options.Quick ? 50 : 400;
+        log.WriteLine($"report: measuring accuracy on {accuracyItems} inputs per family");
+        var harness = new AccuracyHarness(new MacroCodeGenerator(project), accuracyItems, GaApplicationBenchmarks.Seed);
+        var accuracy = kernels.SelectMany(harness.Measure).ToArray();
+
         GenerationTimings? generation = null;
         if (!options.SkipGeneration)
         {
@@ -84,7 +90,8 @@ public static class ReportCommand
 
         var command = "dotnet run -c Release --project bench/GMac.Benchmarks -- report" + (options.Quick ? " --quick" : "");
         var mode = options.Quick ? "quick: Stopwatch, best of 3 rounds of 20 ms" : "full: BenchmarkDotNet in process, 4 warm-ups, 10 iterations of 200 ms, median";
-        var markdown = MarkdownReport.Render(rows, generation, mode, command, ChartFile);
+        var markdown = MarkdownReport.Render(rows, generation, mode, command, ChartFile,
+            accuracy, AccuracyTable.Section(accuracy, accuracyItems, GaApplicationBenchmarks.Seed));
         var png = BarChart.Render(timings);
 
         Directory.CreateDirectory(options.OutputDirectory);

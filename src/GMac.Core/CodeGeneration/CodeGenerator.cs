@@ -1,3 +1,4 @@
+using GMac.Core.CodeGeneration.Accuracy;
 using GMac.Core.Symbolic;
 
 namespace GMac.Core.CodeGeneration;
@@ -38,12 +39,13 @@ public static class CodeGenerator
             if (joined.Statistics().Cost <= HopelessFactor * (long)bestSoFar)
                 candidates.Add((Optimizer.Optimize(joined), JoinMode.Joined));
         }
-        // The cheapest form wins; on a tie, the one with fewer temporaries, then the joined (simplest) form.
+        // The cheapest form wins unless it is far less accurate; on a tie, the one with fewer temporaries, then the joined (simplest) form.
         var ranked = candidates
             .Select((c, i) => (c.Block, c.Form, Stats: c.Block.Statistics(), Index: i))
             .OrderBy(c => c.Stats.Cost).ThenBy(c => c.Stats.Temporaries).ThenBy(c => c.Form == JoinMode.Joined ? 0 : 1).ThenBy(c => c.Index)
             .ToList();
-        var best = ranked[0];
+        // accuracy overrules cost only where the cheaper form loses far more than the others
+        var best = ranked[AccuracyProbe.MostAccurateAffordable(ranked.Select(c => c.Block).ToList())];
         var alternative = ranked.Skip(1).FirstOrDefault(c => c.Form != best.Form);
         return new CodeGenerationResult(best.Block, best.Stats, best.Form, alternative.Block is null ? null : alternative.Stats);
     }

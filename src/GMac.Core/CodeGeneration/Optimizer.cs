@@ -16,6 +16,7 @@ public sealed class Optimizer
         var pairs = new PairExtractionPass();
         var factor = new SumFactoringPass();
 
+        block = new TranslationInvariancePass().Run(block); // before any pass shapes sums for sharing
         block = dead.Run(copy.Run(fold.Run(block)));
         block = fold.Run(strength.Run(block));
         for (var round = 0; round < 8; round++)
