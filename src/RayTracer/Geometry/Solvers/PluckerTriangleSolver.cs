@@ -1,0 +1,157 @@
+using System.Runtime.CompilerServices;
+using RayTracer.Maths;
+using RayTracer.Tracing;
+
+namespace RayTracer.Geometry.Solvers;
+
+/// <summary>
+/// The Plücker ray–triangle test of thesis §6.6.3, its arithmetic generated from dsl/macros/plucker.gmac.
+/// The signed distances d1, d2, d3 of the ray to the edge lines v0v1, v1v2, v2v0 must share one sign;
+/// two are computed first so that most misses leave early. Then d_i / (d1 + d2 + d3) are the
+/// barycentrics (d1 weights v2, d2 weights v0, d3 weights v1) and t = tn / (d1 + d2 + d3).
+/// </summary>
+public static class PluckerTriangleSolver
+{
+    /// <summary>Hit with t in (<see cref="MathConstants.Epsilon"/>, tMax), with the barycentrics of v1 (beta) and v2 (gamma).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static bool Intersect(
+        in Ray ray, in Point3D v0, in Point3D v1, in Point3D v2, double tMax,
+        out double t, out double beta, out double gamma)
+    {
+        t = Hit(ray, v0, v1, v2, tMax, out beta, out gamma);
+        return t < double.PositiveInfinity;
+    }
+
+    /// <summary>The hit distance below tMax, or +∞.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static double Distance(in Ray ray, in Point3D v0, in Point3D v1, in Point3D v2, double tMax) =>
+        Hit(ray, v0, v1, v2, tMax, out _, out _);
+
+    /// <summary>The same test on stored edge lines and plane (<see cref="PluckerTriangle.From"/>).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static bool Intersect(in Ray ray, in PluckerTriangle triangle, double tMax, out double t, out double beta, out double gamma)
+    {
+        t = Hit(ray, triangle, tMax, out beta, out gamma);
+        return t < double.PositiveInfinity;
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static double Distance(in Ray ray, in PluckerTriangle triangle, double tMax) =>
+        Hit(ray, triangle, tMax, out _, out _);
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static double Hit(
+        in Ray ray, in Point3D v0, in Point3D v1, in Point3D v2, double tMax, out double beta, out double gamma)
+    {
+        TriangleTestCounters.Plucker.Increment();
+        beta = gamma = 0;
+        double d1, d2;
+
+        #region GMac : PluckerRayTriangle
+        //GMac.Bind("pr", "PgaVector3D", ray.o);
+        //GMac.Bind("vr", "PgaVector3D", ray.d);
+        //GMac.Bind("v1", "PgaVector3D", v0);
+        //GMac.Bind("v2", "PgaVector3D", v1);
+        //GMac.Bind("v3", "PgaVector3D", v2);
+        //GMac.Bind("d1.1", "<d1>");
+        //GMac.Bind("d2.1", "<d2>");
+        double tmp0 = ray.o.x * ray.d.y - ray.o.y * ray.d.x;
+        double tmp1 = ray.o.x * ray.d.z - ray.o.z * ray.d.x;
+        double tmp2 = ray.o.y * ray.d.z - ray.o.z * ray.d.y;
+        d1 = v1.y * (ray.d.x * v0.z - ray.d.z * v0.x) + v1.z * (ray.d.y * v0.x - ray.d.x * v0.y) + v1.x * (ray.d.z * v0.y - ray.d.y * v0.z) + tmp0 * (v0.z - v1.z) + tmp2 * (v0.x - v1.x) - tmp1 * (v0.y - v1.y);
+        d2 = v1.y * (v2.x * ray.d.z - tmp1 - v2.z * ray.d.x) + v2.y * (tmp1 + v1.z * ray.d.x - ray.d.z * v1.x) + tmp2 * (v1.x - v2.x) + ray.d.y * (v2.z * v1.x - v1.z * v2.x) + tmp0 * (v1.z - v2.z);
+        #endregion
+
+        if ((d1 < 0 && d2 > 0) || (d1 > 0 && d2 < 0))
+            return double.PositiveInfinity;
+        double d3, tn;
+
+        #region GMac : PluckerRayTriangle
+        //GMac.Bind("pr", "PgaVector3D", ray.o);
+        //GMac.Bind("vr", "PgaVector3D", ray.d);
+        //GMac.Bind("v1", "PgaVector3D", v0);
+        //GMac.Bind("v2", "PgaVector3D", v1);
+        //GMac.Bind("v3", "PgaVector3D", v2);
+        //GMac.Bind("d3.1", "<d3>");
+        //GMac.Bind("tn.1", "<tn>");
+        double t0 = v0.x - v1.x;
+        double t1 = v0.y - v1.y;
+        double t2 = v0.z - v1.z;
+        double t3 = v2.x - v0.x;
+        double t4 = v2.y - v0.y;
+        double t5 = v2.z - v0.z;
+        d3 = v2.x * (ray.d.y * v0.z - ray.d.z * v0.y) + v2.y * (ray.d.z * v0.x - ray.d.x * v0.z) + v2.z * (ray.d.x * v0.y - ray.d.y * v0.x) + (ray.o.x * ray.d.y - ray.o.y * ray.d.x) * t5 + t3 * (ray.o.y * ray.d.z - ray.o.z * ray.d.y) - (ray.o.x * ray.d.z - ray.o.z * ray.d.x) * t4;
+        tn = (t3 * t1 - t4 * t0) * (ray.o.z - v0.z) + (t3 * t2 - t5 * t0) * (v0.y - ray.o.y) + (t4 * t2 - t5 * t1) * (ray.o.x - v0.x);
+        #endregion
+
+        return Finish(d1, d2, d3, tn, tMax, out beta, out gamma);
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static double Hit(in Ray ray, in PluckerTriangle triangle, double tMax, out double beta, out double gamma)
+    {
+        TriangleTestCounters.PluckerEdges.Increment();
+        beta = gamma = 0;
+        var lr = new PluckerLine();
+
+        #region GMac : RayLine
+        //GMac.Bind("pr", "PgaVector3D", ray.o);
+        //GMac.Bind("vr", "PgaVector3D", ray.d);
+        //GMac.Bind("line", "PluckerLine", lr);
+        lr.xy = ray.o.x * ray.d.y - ray.o.y * ray.d.x;
+        lr.yz = ray.o.y * ray.d.z - ray.o.z * ray.d.y;
+        lr.xz = ray.o.x * ray.d.z - ray.o.z * ray.d.x;
+        lr.xo = -ray.d.x;
+        lr.yo = -ray.d.y;
+        lr.zo = -ray.d.z;
+        #endregion
+
+        double d1, d2;
+
+        #region GMac : PluckerRayTriangleLines
+        //GMac.Bind("lr", "PluckerLine", lr);
+        //GMac.Bind("l1", "PluckerLine", triangle.L1);
+        //GMac.Bind("l2", "PluckerLine", triangle.L2);
+        //GMac.Bind("d1.1", "<d1>");
+        //GMac.Bind("d2.1", "<d2>");
+        d1 = lr.xy * triangle.L1.zo + lr.yz * triangle.L1.xo + lr.xo * triangle.L1.yz + lr.zo * triangle.L1.xy - triangle.L1.yo * lr.xz - lr.yo * triangle.L1.xz;
+        d2 = lr.xy * triangle.L2.zo + lr.yz * triangle.L2.xo + triangle.L2.xy * lr.zo + triangle.L2.yz * lr.xo - triangle.L2.xz * lr.yo - triangle.L2.yo * lr.xz;
+        #endregion
+
+        if ((d1 < 0 && d2 > 0) || (d1 > 0 && d2 < 0))
+            return double.PositiveInfinity;
+        double d3, tn;
+
+        #region GMac : PluckerRayTriangleLines
+        //GMac.Bind("pr", "PgaVector3D", ray.o);
+        //GMac.Bind("lr", "PluckerLine", lr);
+        //GMac.Bind("l3", "PluckerLine", triangle.L3);
+        //GMac.Bind("plane", "PluckerPlane", triangle.Plane);
+        //GMac.Bind("d3.1", "<d3>");
+        //GMac.Bind("tn.1", "<tn>");
+        d3 = triangle.L3.yz * lr.xo + triangle.L3.xo * lr.yz + triangle.L3.zo * lr.xy + lr.zo * triangle.L3.xy - triangle.L3.xz * lr.yo - triangle.L3.yo * lr.xz;
+        tn = ray.o.x * triangle.Plane.yzo + triangle.Plane.xyo * ray.o.z - ray.o.y * triangle.Plane.xzo - triangle.Plane.xyz;
+        #endregion
+
+        return Finish(d1, d2, d3, tn, tMax, out beta, out gamma);
+    }
+
+    /// <summary>The sign test on the third distance, then (6.19) and (6.20) with one division.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static double Finish(double d1, double d2, double d3, double tn, double tMax, out double beta, out double gamma)
+    {
+        beta = gamma = 0;
+        if ((d3 < 0 && (d1 > 0 || d2 > 0)) || (d3 > 0 && (d1 < 0 || d2 < 0)))
+            return double.PositiveInfinity;
+        double sum = d1 + d2 + d3;
+        if (sum == 0)
+            return double.PositiveInfinity; // ray parallel to the plane, or the triangle degenerate
+        double inv = 1.0 / sum;
+        double t = tn * inv;
+        if (!(t > MathConstants.Epsilon && t < tMax))
+            return double.PositiveInfinity;
+        beta = d3 * inv;
+        gamma = d1 * inv;
+        return t;
+    }
+}
