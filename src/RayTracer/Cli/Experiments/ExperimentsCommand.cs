@@ -11,6 +11,7 @@ public static class ExperimentsCommand
     public static Command Create(TextWriter stdout, TextWriter stderr)
     {
         var experiments = new Command("experiments", "Runs the intersection-method experiments and writes their reports.");
+        experiments.Subcommands.Add(TrianglesCommand.Create(stdout, stderr));
         _ = stdout;
         _ = stderr;
         return experiments;
