@@ -19,7 +19,7 @@ public sealed class TriangleTestCounters_Count
         var counter = TriangleTestCounters.For(test);
         var before = counter.Total;
         // From several threads, as a render calls them: the per-thread counts are summed.
-        Parallel.For(0, 4, _ =>
+        Parallel.For(0, 4, worker =>
         {
             for (var i = 0; i < 250; i++)
                 triangle.Intersect(new Ray(new Point3D(0.25, 0.25, 1), new Vector3D(0, 0, -1)), out _);
