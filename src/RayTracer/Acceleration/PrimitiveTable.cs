@@ -151,11 +151,24 @@ internal sealed class PrimitiveTable
                 return PluckerTriangleSolver.Distance(ray, tri.V0, tri.V1, tri.V2, tMax);
             }
             case PrimitiveKind.PluckerEdges:
-                return PluckerTriangleSolver.Distance(ray, _lines[i], tMax);
+                return PluckerTriangleSolver.Distance(ray, PluckerTriangleSolver.RayLine(ray), _lines[i], tMax);
             default:
                 return Objects[i].Intersect(ray, out double t) && t < tMax ? t : double.PositiveInfinity;
         }
     }
+
+    /// <summary>As <see cref="Distance(int, in Ray, double)"/>, with the ray's Plücker line built once per ray by the caller.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public double Distance(int i, in Ray ray, in PluckerLine rayLine, double tMax) =>
+        _kind[i] == PrimitiveKind.PluckerEdges
+            ? PluckerTriangleSolver.Distance(ray, rayLine, _lines[i], tMax)
+            : Distance(i, ray, tMax);
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public bool Occludes(int i, in Ray ray, in PluckerLine rayLine, double tMax) =>
+        _kind[i] == PrimitiveKind.PluckerEdges
+            ? _castsShadows[i] && PluckerTriangleSolver.Distance(ray, rayLine, _lines[i], tMax) < tMax
+            : Occludes(i, ray, tMax);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public bool Occludes(int i, in Ray ray, double tMax)

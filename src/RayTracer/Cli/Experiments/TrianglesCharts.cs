@@ -64,10 +64,10 @@ public static class TrianglesCharts
         var bars = new List<Bar>();
         for (var s = 0; s < scenes.Length; s++)
         {
-            var algebraic = Find(results, scenes[s], TriangleTest.Algebraic).RenderTime.TotalSeconds;
+            var algebraic = Find(results, scenes[s], TriangleTest.Algebraic).RenderCpuTime.TotalSeconds;
             for (var k = 0; k < variants.Length; k++)
             {
-                var gain = 100 * (1 - Find(results, scenes[s], variants[k]).RenderTime.TotalSeconds / algebraic);
+                var gain = 100 * (1 - Find(results, scenes[s], variants[k]).RenderCpuTime.TotalSeconds / algebraic);
                 bars.Add(new Bar
                 {
                     Position = s + (k - 0.5) * barWidth,
@@ -87,7 +87,7 @@ public static class TrianglesCharts
         plot.Axes.SetLimits(-0.6, scenes.Length - 0.4, -extent, extent);
         plot.Grid.XAxisStyle.MajorLineStyle.Width = 0;
         plot.YLabel("gain over the algebraic test (%)");
-        plot.Title("Figure 7-9 re-created: render-time gain of the Plücker test over the algebraic test, (1 − P/A)");
+        plot.Title("Figure 7-9 re-created: render CPU-time gain of the Plücker test over the algebraic test, (1 − P/A)");
         for (var k = 0; k < variants.Length; k++)
             plot.Legend.ManualItems.Add(new LegendItem { LabelText = variants[k].Name(), FillColor = Colours[2 + k] });
         plot.ShowLegend(Edge.Bottom);

@@ -28,10 +28,8 @@ public sealed class TrianglesExperiment(TrianglesSettings settings)
         var results = new List<TrianglesMeasurement>();
         foreach (var scene in scenes)
         {
-            FrameBuffer? reference = null;
-            foreach (var test in Tests)
+            foreach (var measurement in MeasureScene(scene))
             {
-                var measurement = Measure(scene, test, ref reference);
                 results.Add(measurement);
                 Measured?.Invoke(measurement);
             }
@@ -40,52 +38,92 @@ public sealed class TrianglesExperiment(TrianglesSettings settings)
         return results;
     }
 
-    private TrianglesMeasurement Measure(TriangleTestScene scene, TriangleTest test, ref FrameBuffer? reference)
+    /// <summary>One scene with every test. The timed runs take the tests in turn, round after round, so
+    /// that a change of load on a shared machine falls on all of them alike.</summary>
+    private List<TrianglesMeasurement> MeasureScene(TriangleTestScene scene)
     {
-        scene.Mesh.TriangleTest = test;
-        var retained = RetainedBytes(scene.Mesh);
-        var world = scene.Build(new SceneSettings { Width = settings.Width, Height = settings.Height });
+        var runs = new List<TestRun>();
+        foreach (var test in Tests)
+        {
+            scene.Mesh.TriangleTest = test;
+            var retained = RetainedBytes(scene.Mesh);
+            var world = scene.Build(new SceneSettings { Width = settings.Width, Height = settings.Height });
+            runs.Add(new TestRun(test, world, scene.Hierarchy!, retained, NearestHitRays(scene, world)));
+        }
+
         var renderer = new Renderer(new RenderOptions { Seed = 0, Threads = settings.Threads });
-        var counter = TriangleTestCounters.For(test);
-
-        // The first render warms the code up and gives the counts and the image; the timed ones follow.
-        counter.Reset();
-        var first = renderer.RenderWithStatistics(world);
-        var invocations = counter.Total;
-        var best = TimeSpan.MaxValue;
-        for (var r = 0; r < settings.Repeats; r++)
+        foreach (var run in runs)
         {
-            var elapsed = renderer.RenderWithStatistics(world).Elapsed;
-            if (elapsed < best)
-                best = elapsed;
+            // The first render warms the code up and gives the counts and the image.
+            var counter = TriangleTestCounters.For(run.Test);
+            counter.Reset();
+            run.First = renderer.RenderWithStatistics(run.World);
+            run.Invocations = counter.Total;
+            NearestHits(run);
         }
 
-        double maxDifference = 0;
-        var differing = 0;
-        if (reference is null)
+        for (var round = 0; round < settings.Repeats; round++)
         {
-            reference = first.Image;
-            Rendered?.Invoke(scene, world, first.Image);
-        }
-        else
-        {
-            (maxDifference, differing) = Compare(reference, first.Image);
+            foreach (var run in runs)
+            {
+                var cpu = CpuTime();
+                var elapsed = renderer.RenderWithStatistics(run.World).Elapsed;
+                run.Render.Add(elapsed, CpuTime() - cpu);
+                var (wall, nearestCpu) = NearestHits(run);
+                run.NearestHit.Add(wall, nearestCpu);
+            }
         }
 
-        return new TrianglesMeasurement
+        var reference = runs[0].First!.Image;
+        Rendered?.Invoke(scene, runs[0].World, reference);
+        return [.. runs.Select(run =>
         {
-            Scene = scene.Name,
-            Test = test,
-            Triangles = scene.Mesh.TriangleCount,
-            Rays = first.TotalRays,
-            TestInvocations = invocations,
-            RenderTime = best,
-            NearestHitTime = NearestHitTime(scene, world),
-            NearestHitRays = settings.NearestHitRays,
-            RetainedBytes = retained,
-            MaxPixelDifference = maxDifference,
-            DifferingPixels = differing,
-        };
+            var (maxDifference, differing) = Compare(reference, run.First!.Image);
+            return new TrianglesMeasurement
+            {
+                Scene = scene.Name,
+                Test = run.Test,
+                Triangles = scene.Mesh.TriangleCount,
+                Rays = run.First.TotalRays,
+                TestInvocations = run.Invocations,
+                RenderTime = run.Render.Wall,
+                RenderCpuTime = run.Render.Cpu,
+                NearestHitTime = run.NearestHit.Wall,
+                NearestHitCpuTime = run.NearestHit.Cpu,
+                NearestHitRays = run.Rays.Length,
+                RetainedBytes = run.RetainedBytes,
+                MaxPixelDifference = maxDifference,
+                DifferingPixels = differing,
+            };
+        })];
+    }
+
+    private static TimeSpan CpuTime() => Process.GetCurrentProcess().TotalProcessorTime;
+
+    /// <summary>The best wall and CPU times seen.</summary>
+    private sealed class Best
+    {
+        public TimeSpan Wall { get; private set; } = TimeSpan.MaxValue;
+        public TimeSpan Cpu { get; private set; } = TimeSpan.MaxValue;
+
+        public void Add(TimeSpan wall, TimeSpan cpu)
+        {
+            Wall = wall < Wall ? wall : Wall;
+            Cpu = cpu < Cpu ? cpu : Cpu;
+        }
+    }
+
+    private sealed class TestRun(TriangleTest test, World world, Acceleration.BoundingIntervalHierarchy hierarchy, long retainedBytes, Ray[] rays)
+    {
+        public TriangleTest Test { get; } = test;
+        public World World { get; } = world;
+        public Acceleration.BoundingIntervalHierarchy Hierarchy { get; } = hierarchy;
+        public long RetainedBytes { get; } = retainedBytes;
+        public Ray[] Rays { get; } = rays;
+        public RenderResult? First { get; set; }
+        public long Invocations { get; set; }
+        public Best Render { get; } = new();
+        public Best NearestHit { get; } = new();
     }
 
     /// <summary>The heap that a BIH over the mesh's triangles keeps alive, after full collections on both sides.</summary>
@@ -98,10 +136,9 @@ public sealed class TrianglesExperiment(TrianglesSettings settings)
         return after - before;
     }
 
-    /// <summary>Nearest hits of rays from the camera's eye towards seeded random points of the mesh's bounds.</summary>
-    private TimeSpan NearestHitTime(TriangleTestScene scene, World world)
+    /// <summary>Rays from the camera's eye towards seeded random points of the mesh's bounds.</summary>
+    private Ray[] NearestHitRays(TriangleTestScene scene, World world)
     {
-        var hierarchy = scene.Hierarchy!;
         var eye = world.Camera!.Eye;
         var box = scene.Mesh.Bounds;
         var random = new SeededRandom(17);
@@ -115,21 +152,21 @@ public sealed class TrianglesExperiment(TrianglesSettings settings)
             rays[i] = new Ray(eye, (target - eye).Normalized());
         }
 
-        var best = TimeSpan.MaxValue;
-        for (var r = 0; r <= settings.Repeats; r++)
-        {
-            var watch = Stopwatch.StartNew();
-            var hits = 0;
-            foreach (var ray in rays)
-                if (hierarchy.IntersectNearest(ray, double.PositiveInfinity, out _, out _))
-                    hits++;
-            watch.Stop();
-            GC.KeepAlive(hits);
-            if (r > 0 && watch.Elapsed < best)
-                best = watch.Elapsed; // the first pass warms up
-        }
+        return rays;
+    }
 
-        return best;
+    /// <summary>Nearest-hit queries alone (BIH traversal and tests) on this thread: wall and CPU time.</summary>
+    private static (TimeSpan Wall, TimeSpan Cpu) NearestHits(TestRun run)
+    {
+        var cpu = CpuTime();
+        var watch = Stopwatch.StartNew();
+        var hits = 0;
+        foreach (var ray in run.Rays)
+            if (run.Hierarchy.IntersectNearest(ray, double.PositiveInfinity, out _, out _))
+                hits++;
+        watch.Stop();
+        GC.KeepAlive(hits);
+        return (watch.Elapsed, CpuTime() - cpu);
     }
 
     /// <summary>Largest channel difference in linear radiance and the number of pixels that differ at all.</summary>

@@ -18,8 +18,13 @@ public sealed record TrianglesMeasurement
     /// <summary>Best wall time of the whole render over the repeats (everything but the test is the same).</summary>
     public required TimeSpan RenderTime { get; init; }
 
+    /// <summary>Best CPU time of the process over the same renders: less sensitive than wall time to other jobs on the machine.</summary>
+    public required TimeSpan RenderCpuTime { get; init; }
+
     /// <summary>Best wall time of nearest-hit queries alone (BIH traversal and tests) for a fixed set of rays.</summary>
     public required TimeSpan NearestHitTime { get; init; }
+
+    public required TimeSpan NearestHitCpuTime { get; init; }
 
     public required int NearestHitRays { get; init; }
 

@@ -16,6 +16,9 @@ public sealed record TrianglesSettings
     /// <summary>Rays of the nearest-hit timing, from the eye towards random points of the mesh's bounds.</summary>
     public int NearestHitRays { get; init; } = 200_000;
 
+    /// <summary>Names of the scenes to run; empty runs all five.</summary>
+    public IReadOnlyList<string> Scenes { get; init; } = [];
+
     /// <summary>Small meshes and images and one repeat: for checking the code paths, not for figures.</summary>
     public static TrianglesSettings Quick { get; } = new() { Detail = 0.02, Width = 64, Height = 48, Repeats = 1, NearestHitRays = 2_000 };
 }

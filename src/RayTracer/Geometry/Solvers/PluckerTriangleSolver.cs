@@ -31,67 +31,22 @@ public static class PluckerTriangleSolver
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static bool Intersect(in Ray ray, in PluckerTriangle triangle, double tMax, out double t, out double beta, out double gamma)
     {
-        t = Hit(ray, triangle, tMax, out beta, out gamma);
+        t = Hit(ray, RayLine(ray), triangle, tMax, out beta, out gamma);
         return t < double.PositiveInfinity;
     }
 
+    /// <summary>
+    /// The test on stored lines given the ray's line (<see cref="RayLine"/>), which a traversal builds
+    /// once per ray. Same arithmetic as <see cref="Intersect(in Ray, in PluckerTriangle, double, out double, out double, out double)"/>.
+    /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static double Distance(in Ray ray, in PluckerTriangle triangle, double tMax) =>
-        Hit(ray, triangle, tMax, out _, out _);
+    public static double Distance(in Ray ray, in PluckerLine rayLine, in PluckerTriangle triangle, double tMax) =>
+        Hit(ray, rayLine, triangle, tMax, out _, out _);
 
+    /// <summary>The ray as the line (o + eo) ∧ d, generated from RayLine (6.15).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static double Hit(
-        in Ray ray, in Point3D v0, in Point3D v1, in Point3D v2, double tMax, out double beta, out double gamma)
+    public static PluckerLine RayLine(in Ray ray)
     {
-        TriangleTestCounters.Plucker.Increment();
-        beta = gamma = 0;
-        double d1, d2;
-
-        #region GMac : PluckerRayTriangle
-        //GMac.Bind("pr", "PgaVector3D", ray.o);
-        //GMac.Bind("vr", "PgaVector3D", ray.d);
-        //GMac.Bind("v1", "PgaVector3D", v0);
-        //GMac.Bind("v2", "PgaVector3D", v1);
-        //GMac.Bind("v3", "PgaVector3D", v2);
-        //GMac.Bind("d1.1", "<d1>");
-        //GMac.Bind("d2.1", "<d2>");
-        double tmp0 = ray.o.x * ray.d.y - ray.o.y * ray.d.x;
-        double tmp1 = ray.o.x * ray.d.z - ray.o.z * ray.d.x;
-        double tmp2 = ray.o.y * ray.d.z - ray.o.z * ray.d.y;
-        d1 = v1.y * (ray.d.x * v0.z - ray.d.z * v0.x) + v1.z * (ray.d.y * v0.x - ray.d.x * v0.y) + v1.x * (ray.d.z * v0.y - ray.d.y * v0.z) + tmp0 * (v0.z - v1.z) + tmp2 * (v0.x - v1.x) - tmp1 * (v0.y - v1.y);
-        d2 = v1.y * (v2.x * ray.d.z - tmp1 - v2.z * ray.d.x) + v2.y * (tmp1 + v1.z * ray.d.x - ray.d.z * v1.x) + tmp2 * (v1.x - v2.x) + ray.d.y * (v2.z * v1.x - v1.z * v2.x) + tmp0 * (v1.z - v2.z);
-        #endregion
-
-        if ((d1 < 0 && d2 > 0) || (d1 > 0 && d2 < 0))
-            return double.PositiveInfinity;
-        double d3, tn;
-
-        #region GMac : PluckerRayTriangle
-        //GMac.Bind("pr", "PgaVector3D", ray.o);
-        //GMac.Bind("vr", "PgaVector3D", ray.d);
-        //GMac.Bind("v1", "PgaVector3D", v0);
-        //GMac.Bind("v2", "PgaVector3D", v1);
-        //GMac.Bind("v3", "PgaVector3D", v2);
-        //GMac.Bind("d3.1", "<d3>");
-        //GMac.Bind("tn.1", "<tn>");
-        double t0 = v0.x - v1.x;
-        double t1 = v0.y - v1.y;
-        double t2 = v0.z - v1.z;
-        double t3 = v2.x - v0.x;
-        double t4 = v2.y - v0.y;
-        double t5 = v2.z - v0.z;
-        d3 = v2.x * (ray.d.y * v0.z - ray.d.z * v0.y) + v2.y * (ray.d.z * v0.x - ray.d.x * v0.z) + v2.z * (ray.d.x * v0.y - ray.d.y * v0.x) + (ray.o.x * ray.d.y - ray.o.y * ray.d.x) * t5 + t3 * (ray.o.y * ray.d.z - ray.o.z * ray.d.y) - (ray.o.x * ray.d.z - ray.o.z * ray.d.x) * t4;
-        tn = (t3 * t1 - t4 * t0) * (ray.o.z - v0.z) + (t3 * t2 - t5 * t0) * (v0.y - ray.o.y) + (t4 * t2 - t5 * t1) * (ray.o.x - v0.x);
-        #endregion
-
-        return Finish(d1, d2, d3, tn, tMax, out beta, out gamma);
-    }
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static double Hit(in Ray ray, in PluckerTriangle triangle, double tMax, out double beta, out double gamma)
-    {
-        TriangleTestCounters.PluckerEdges.Increment();
-        beta = gamma = 0;
         var lr = new PluckerLine();
 
         #region GMac : RayLine
@@ -106,6 +61,54 @@ public static class PluckerTriangleSolver
         lr.zo = -ray.d.z;
         #endregion
 
+        return lr;
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static double Hit(
+        in Ray ray, in Point3D v0, in Point3D v1, in Point3D v2, double tMax, out double beta, out double gamma)
+    {
+        TriangleTestCounters.Plucker.Increment();
+        beta = gamma = 0;
+        // Seen from the ray's origin (pr = 0, left unbound): the generator folds the ray's line to
+        // eo ∧ d, and each d_i to a triple product of d with two vertices.
+        Vector3D a = v0 - ray.o, b = v1 - ray.o, c = v2 - ray.o;
+        double d1, d2;
+
+        #region GMac : PluckerRayTriangle
+        //GMac.Bind("vr", "PgaVector3D", ray.d);
+        //GMac.Bind("v1", "PgaVector3D", a);
+        //GMac.Bind("v2", "PgaVector3D", b);
+        //GMac.Bind("v3", "PgaVector3D", c);
+        //GMac.Bind("d1.1", "<d1>");
+        //GMac.Bind("d2.1", "<d2>");
+        d1 = ray.d.x * (a.z * b.y - a.y * b.z) + ray.d.y * (a.x * b.z - a.z * b.x) + ray.d.z * (a.y * b.x - a.x * b.y);
+        d2 = ray.d.x * (c.y * b.z - c.z * b.y) + ray.d.y * (c.z * b.x - b.z * c.x) + ray.d.z * (b.y * c.x - c.y * b.x);
+        #endregion
+
+        if ((d1 < 0 && d2 > 0) || (d1 > 0 && d2 < 0))
+            return double.PositiveInfinity;
+        double d3, tn;
+
+        #region GMac : PluckerRayTriangle
+        //GMac.Bind("vr", "PgaVector3D", ray.d);
+        //GMac.Bind("v1", "PgaVector3D", a);
+        //GMac.Bind("v2", "PgaVector3D", b);
+        //GMac.Bind("v3", "PgaVector3D", c);
+        //GMac.Bind("d3.1", "<d3>");
+        //GMac.Bind("tn.1", "<tn>");
+        d3 = ray.d.x * (c.z * a.y - c.y * a.z) + ray.d.y * (a.z * c.x - c.z * a.x) + ray.d.z * (c.y * a.x - a.y * c.x);
+        tn = c.y * (a.x * b.z - a.z * b.x) + c.z * (a.y * b.x - a.x * b.y) + c.x * (a.z * b.y - a.y * b.z);
+        #endregion
+
+        return Finish(d1, d2, d3, tn, tMax, out beta, out gamma);
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static double Hit(in Ray ray, in PluckerLine lr, in PluckerTriangle triangle, double tMax, out double beta, out double gamma)
+    {
+        TriangleTestCounters.PluckerEdges.Increment();
+        beta = gamma = 0;
         double d1, d2;
 
         #region GMac : PluckerRayTriangleLines

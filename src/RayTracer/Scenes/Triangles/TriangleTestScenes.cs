@@ -14,23 +14,29 @@ namespace RayTracer.Scenes.Triangles;
 /// </summary>
 public static class TriangleTestScenes
 {
-    public static IReadOnlyList<TriangleTestScene> Create(double detail = 1)
+    public static IReadOnlyList<string> Names { get; } = ["glass-bunny", "glass-shell", "mirror-column", "bumpy-torus", "bumpy-sphere"];
+
+    /// <summary>The scenes named in <paramref name="only"/> (all when null or empty), in catalogue order.</summary>
+    public static IReadOnlyList<TriangleTestScene> Create(double detail = 1, IReadOnlyCollection<string>? only = null)
     {
         ArgumentOutOfRangeException.ThrowIfNegativeOrZero(detail);
-        return
-        [
-            new TriangleTestScene("glass-bunny", "The Stanford bunny, subdivided, in glass", Bunny(detail), "Transparent bunny", 69_451)
-                .With(MaterialFactory.Glass(new RGBColor(0.9, 0.97, 0.92))),
-            new TriangleTestScene("glass-shell", "A Twister seashell in glass", Grid(GlassShell(), 654_666 * detail), "Transparent hand", 654_666) { Elevation = 30 }
-                .With(MaterialFactory.Glass(new RGBColor(0.95, 0.9, 0.85))),
-            new TriangleTestScene("mirror-column", "A twisted Twister column as a mirror", Grid(MirrorColumn(), 31_460 * detail), "Pyramob", 31_460)
-                .With(MaterialFactory.Mirror(new RGBColor(0.9, 0.85, 0.7), 0.8)),
-            new TriangleTestScene("bumpy-torus", "A displaced Twister torus, smooth shaded", Grid(BumpyTorus(), 96_966 * detail), "Horse", 96_966) { Elevation = 35 }
-                .With(MaterialFactory.Plastic(new RGBColor(0.75, 0.45, 0.25), 40)),
-            new TriangleTestScene("bumpy-sphere", "A displaced sphere, smooth shaded", Acceleration.ThroughputReport.DisplacedSphere((int)Math.Max(200, 871_414 * detail)), "Dragon", 871_414)
-                .With(MaterialFactory.Shiny(new RGBColor(0.35, 0.6, 0.4))),
-        ];
+        return [.. Names.Where(name => only is null || only.Count == 0 || only.Contains(name)).Select(name => Create(name, detail))];
     }
+
+    private static TriangleTestScene Create(string name, double detail) => name switch
+    {
+        "glass-bunny" => new TriangleTestScene(name, "The Stanford bunny, subdivided, in glass", Bunny(detail), "Transparent bunny", 69_451)
+            .With(MaterialFactory.Glass(new RGBColor(0.9, 0.97, 0.92))),
+        "glass-shell" => new TriangleTestScene(name, "A Twister seashell in glass", Grid(GlassShell(), 654_666 * detail), "Transparent hand", 654_666) { Elevation = 30 }
+            .With(MaterialFactory.Glass(new RGBColor(0.95, 0.9, 0.85))),
+        "mirror-column" => new TriangleTestScene(name, "A twisted Twister column as a mirror", Grid(MirrorColumn(), 31_460 * detail), "Pyramob", 31_460)
+            .With(MaterialFactory.Mirror(new RGBColor(0.9, 0.85, 0.7), 0.8)),
+        "bumpy-torus" => new TriangleTestScene(name, "A displaced Twister torus, smooth shaded", Grid(BumpyTorus(), 96_966 * detail), "Horse", 96_966) { Elevation = 35 }
+            .With(MaterialFactory.Plastic(new RGBColor(0.75, 0.45, 0.25), 40)),
+        "bumpy-sphere" => new TriangleTestScene(name, "A displaced sphere, smooth shaded", Acceleration.ThroughputReport.DisplacedSphere((int)Math.Max(200, 871_414 * detail)), "Dragon", 871_414)
+            .With(MaterialFactory.Shiny(new RGBColor(0.35, 0.6, 0.4))),
+        _ => throw new ArgumentException($"unknown scene '{name}'", nameof(name)),
+    };
 
     /// <summary>The committed bunny (3,674 triangles), subdivided while that stays at or under the asked count.</summary>
     public static Mesh Bunny(double detail = 1)
