@@ -55,8 +55,8 @@ public sealed class Mesh : ObjectNature
     public int TriangleCount => Indices.Length / 3;
 
     /// <summary>
-    /// The ray–triangle test of this mesh's triangles (Möller–Trumbore unless set). Acceleration
-    /// structures read it when they are built, so set it before building one over the triangles.
+    /// The ray–triangle test of this mesh's triangles (Möller–Trumbore unless set). Triangles take it
+    /// when <see cref="CreateTriangles"/> makes them, so set it before.
     /// </summary>
     public TriangleTest TriangleTest { get; set; } = TriangleTest.MollerTrumbore;
 

@@ -11,7 +11,8 @@ namespace RayTracer.Geometry.Meshes;
 /// <summary>
 /// Triangle <see cref="Index"/> of a <see cref="Mesh"/>. Flat triangles use the face normal; smooth
 /// ones interpolate the vertex normals with the barycentric coordinates of the hit. The test is the
-/// mesh's <see cref="Mesh.TriangleTest"/>, with the same arithmetic as in acceleration structures.
+/// mesh's <see cref="Mesh.TriangleTest"/> when the triangle is created, kept so that an acceleration
+/// structure built over it and the triangle's own hit test always run the same arithmetic.
 /// </summary>
 public sealed class MeshTriangle : GeometricObject, ITriangle
 {
@@ -29,6 +30,7 @@ public sealed class MeshTriangle : GeometricObject, ITriangle
 
         Index = index;
         Smooth = smooth;
+        Test = mesh.TriangleTest;
         _i0 = mesh.Indices[3 * index];
         _i1 = mesh.Indices[3 * index + 1];
         _i2 = mesh.Indices[3 * index + 2];
@@ -50,7 +52,7 @@ public sealed class MeshTriangle : GeometricObject, ITriangle
 
     public Point3D V2 => Mesh.Vertices[_i2];
 
-    public TriangleTest Test => Mesh.TriangleTest;
+    public TriangleTest Test { get; }
 
     /// <summary>Falls back to the mesh's shared material.</summary>
     public override Material? Material
@@ -68,7 +70,7 @@ public sealed class MeshTriangle : GeometricObject, ITriangle
     public bool Solve(in Ray ray, out double t, out double beta, out double gamma)
     {
         Point3D v0 = V0, v1 = V1, v2 = V2;
-        return Mesh.TriangleTest switch
+        return Test switch
         {
             TriangleTest.Algebraic => AlgebraicTriangleSolver.Intersect(ray, v0, v1 - v0, v2 - v0, double.PositiveInfinity, out t, out beta, out gamma),
             TriangleTest.Plucker => PluckerTriangleSolver.Intersect(ray, v0, v1, v2, double.PositiveInfinity, out t, out beta, out gamma),

@@ -88,7 +88,7 @@ public static class PluckerTriangleSolver
 
         if ((d1 < 0 && d2 > 0) || (d1 > 0 && d2 < 0))
             return double.PositiveInfinity;
-        double d3, tn;
+        double d3;
 
         #region GMac : PluckerRayTriangle
         //GMac.Bind("vr", "PgaVector3D", ray.d);
@@ -96,8 +96,19 @@ public static class PluckerTriangleSolver
         //GMac.Bind("v2", "PgaVector3D", b);
         //GMac.Bind("v3", "PgaVector3D", c);
         //GMac.Bind("d3.1", "<d3>");
-        //GMac.Bind("tn.1", "<tn>");
         d3 = ray.d.x * (c.z * a.y - c.y * a.z) + ray.d.y * (a.z * c.x - c.z * a.x) + ray.d.z * (c.y * a.x - a.y * c.x);
+        #endregion
+
+        if (!SameSide(d1, d2, d3))
+            return double.PositiveInfinity;
+        double tn;
+
+        #region GMac : PluckerRayTriangle
+        //GMac.Bind("vr", "PgaVector3D", ray.d);
+        //GMac.Bind("v1", "PgaVector3D", a);
+        //GMac.Bind("v2", "PgaVector3D", b);
+        //GMac.Bind("v3", "PgaVector3D", c);
+        //GMac.Bind("tn.1", "<tn>");
         tn = c.y * (a.x * b.z - a.z * b.x) + c.z * (a.y * b.x - a.x * b.y) + c.x * (a.z * b.y - a.y * b.z);
         #endregion
 
@@ -123,29 +134,40 @@ public static class PluckerTriangleSolver
 
         if ((d1 < 0 && d2 > 0) || (d1 > 0 && d2 < 0))
             return double.PositiveInfinity;
-        double d3, tn;
+        double d3;
 
         #region GMac : PluckerRayTriangleLines
         //GMac.Bind("pr", "PgaVector3D", ray.o);
         //GMac.Bind("lr", "PluckerLine", lr);
         //GMac.Bind("l3", "PluckerLine", triangle.L3);
-        //GMac.Bind("plane", "PluckerPlane", triangle.Plane);
         //GMac.Bind("d3.1", "<d3>");
-        //GMac.Bind("tn.1", "<tn>");
         d3 = triangle.L3.yz * lr.xo + triangle.L3.xo * lr.yz + triangle.L3.zo * lr.xy + lr.zo * triangle.L3.xy - triangle.L3.xz * lr.yo - triangle.L3.yo * lr.xz;
-        tn = ray.o.x * triangle.Plane.yzo + triangle.Plane.xyo * ray.o.z - ray.o.y * triangle.Plane.xzo - triangle.Plane.xyz;
+        #endregion
+
+        if (!SameSide(d1, d2, d3))
+            return double.PositiveInfinity;
+        double tn;
+
+        #region GMac : PluckerRayTriangleLines
+        //GMac.Bind("pr", "PgaVector3D", ray.o);
+        //GMac.Bind("plane", "PluckerPlane", triangle.Plane);
+        //GMac.Bind("tn.1", "<tn>");
+        tn = ray.o.x * triangle.Plane.yzo + ray.o.z * triangle.Plane.xyo - ray.o.y * triangle.Plane.xzo - triangle.Plane.xyz;
         #endregion
 
         return Finish(d1, d2, d3, tn, tMax, out beta, out gamma);
     }
 
-    /// <summary>The sign test on the third distance, then (6.19) and (6.20) with one division.</summary>
+    /// <summary>The third distance against the first two, which already agree.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static bool SameSide(double d1, double d2, double d3) =>
+        !((d3 < 0 && (d1 > 0 || d2 > 0)) || (d3 > 0 && (d1 < 0 || d2 < 0)));
+
+    /// <summary>(6.19) and (6.20) with one division, once the ray is known to pass through the triangle.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static double Finish(double d1, double d2, double d3, double tn, double tMax, out double beta, out double gamma)
     {
         beta = gamma = 0;
-        if ((d3 < 0 && (d1 > 0 || d2 > 0)) || (d3 > 0 && (d1 < 0 || d2 < 0)))
-            return double.PositiveInfinity;
         double sum = d1 + d2 + d3;
         if (sum == 0)
             return double.PositiveInfinity; // ray parallel to the plane, or the triangle degenerate

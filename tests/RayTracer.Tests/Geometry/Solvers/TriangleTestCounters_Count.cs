@@ -26,4 +26,19 @@ public sealed class TriangleTestCounters_Count
         });
         Assert.Equal(1000, counter.Total - before);
     }
+
+    [Fact]
+    public void A_triangle_keeps_the_test_its_mesh_had_when_it_was_created()
+    {
+        var mesh = new Mesh([new Point3D(0, 0, 0), new Point3D(1, 0, 0), new Point3D(0, 1, 0)], [0, 1, 2]) { TriangleTest = TriangleTest.Plucker };
+        var triangle = mesh.CreateTriangles(smooth: false)[0];
+        // A structure built over the triangle packed it for the Plücker test; its shading must agree.
+        mesh.TriangleTest = TriangleTest.Algebraic;
+        var plucker = TriangleTestCounters.Plucker.Total;
+        var algebraic = TriangleTestCounters.Algebraic.Total;
+        triangle.Intersect(new Ray(new Point3D(0.25, 0.25, 1), new Vector3D(0, 0, -1)), out _);
+        Assert.Equal(TriangleTest.Plucker, triangle.Test);
+        Assert.Equal(1, TriangleTestCounters.Plucker.Total - plucker);
+        Assert.Equal(0, TriangleTestCounters.Algebraic.Total - algebraic);
+    }
 }
