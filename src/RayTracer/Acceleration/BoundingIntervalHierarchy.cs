@@ -1,6 +1,7 @@
 using System.Runtime.CompilerServices;
 using RayTracer.Bounds;
 using RayTracer.Geometry;
+using RayTracer.Geometry.Solvers;
 using RayTracer.Maths;
 using RayTracer.Tracing;
 
@@ -82,6 +83,8 @@ public sealed class BoundingIntervalHierarchy : AccelerationStructure
             return;
         }
 
+        // Built once per ray for triangles tested on stored Plücker edge lines.
+        var rayLine = PluckerTriangleSolver.RayLine(ray);
         Span<int> stackNode = stackalloc int[MaxDepth + 4];
         Span<double> stackMin = stackalloc double[MaxDepth + 4];
         Span<double> stackMax = stackalloc double[MaxDepth + 4];
@@ -152,7 +155,7 @@ public sealed class BoundingIntervalHierarchy : AccelerationStructure
                 {
                     if (anyHit)
                     {
-                        if (table.Occludes(i, ray, tBest))
+                        if (table.Occludes(i, ray, rayLine, tBest))
                         {
                             hit = true;
                             return;
@@ -160,7 +163,7 @@ public sealed class BoundingIntervalHierarchy : AccelerationStructure
                     }
                     else
                     {
-                        double ti = table.Distance(i, ray, tBest);
+                        double ti = table.Distance(i, ray, rayLine, tBest);
                         if (ti < tBest)
                         {
                             tBest = ti;

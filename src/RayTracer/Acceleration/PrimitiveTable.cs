@@ -1,6 +1,7 @@
 using System.Runtime.CompilerServices;
 using RayTracer.Bounds;
 using RayTracer.Geometry;
+using RayTracer.Geometry.Meshes;
 using RayTracer.Geometry.Solvers;
 using RayTracer.Maths;
 using RayTracer.Tracing;
@@ -9,14 +10,18 @@ namespace RayTracer.Acceleration;
 
 /// <summary>
 /// The primitives of an acceleration structure in the order its leaves refer to them. Triangles are
-/// copied into a packed array and tested inline; other objects go through their virtual
+/// copied into a packed array in the form their test wants (<see cref="ITriangle.Test"/>: vertex and
+/// edges, three vertices, or Plücker edge lines and plane) and tested inline; an array is allocated
+/// only when some triangle uses its form. Other objects go through their virtual
 /// <see cref="GeometricObject.Intersect"/>. Unbounded objects (planes) are kept aside and tested
 /// against every ray. Shadow-casting flags are read when the structure is built.
 /// </summary>
 internal sealed class PrimitiveTable
 {
-    private PackedTriangle[] _triangles;
-    private bool[] _isTriangle;
+    private PackedTriangle[] _triangles = [];
+    private PackedTriangleVertices[] _vertices = [];
+    private PluckerTriangle[] _lines = [];
+    private PrimitiveKind[] _kind;
     private bool[] _castsShadows;
 
     public PrimitiveTable(IReadOnlyList<GeometricObject> objects)
@@ -48,8 +53,7 @@ internal sealed class PrimitiveTable
         Bounds = [.. bounds];
         Unbounded = [.. unbounded];
         Centroids = new Point3D[Objects.Length];
-        _triangles = new PackedTriangle[Objects.Length];
-        _isTriangle = new bool[Objects.Length];
+        _kind = new PrimitiveKind[Objects.Length];
         _castsShadows = new bool[Objects.Length];
         SceneBounds = BoundingBox.Empty;
         for (int i = 0; i < Objects.Length; i++)
@@ -58,12 +62,35 @@ internal sealed class PrimitiveTable
             SceneBounds.Include(Bounds[i]);
             _castsShadows[i] = Objects[i].CastsShadows;
             if (Objects[i] is ITriangle tri)
-            {
-                var v0 = tri.V0;
-                _triangles[i] = new PackedTriangle { V0 = v0, E1 = tri.V1 - v0, E2 = tri.V2 - v0 };
-                _isTriangle[i] = true;
-            }
+                Pack(i, tri);
         }
+    }
+
+    private void Pack(int i, ITriangle tri)
+    {
+        Point3D v0 = tri.V0, v1 = tri.V1, v2 = tri.V2;
+        switch (tri.Test)
+        {
+            case TriangleTest.Plucker:
+                Allocate(ref _vertices)[i] = new PackedTriangleVertices { V0 = v0, V1 = v1, V2 = v2 };
+                _kind[i] = PrimitiveKind.Plucker;
+                break;
+            case TriangleTest.PluckerEdges:
+                Allocate(ref _lines)[i] = PluckerTriangle.From(v0, v1, v2);
+                _kind[i] = PrimitiveKind.PluckerEdges;
+                break;
+            default:
+                Allocate(ref _triangles)[i] = new PackedTriangle { V0 = v0, E1 = v1 - v0, E2 = v2 - v0 };
+                _kind[i] = tri.Test == TriangleTest.Algebraic ? PrimitiveKind.Algebraic : PrimitiveKind.MollerTrumbore;
+                break;
+        }
+    }
+
+    private T[] Allocate<T>(ref T[] array)
+    {
+        if (array.Length == 0)
+            array = new T[Objects.Length];
+        return array;
     }
 
     public GeometricObject[] Objects { get; private set; }
@@ -90,7 +117,9 @@ internal sealed class PrimitiveTable
         Bounds = Gather(Bounds, order);
         Centroids = Gather(Centroids, order);
         _triangles = Gather(_triangles, order);
-        _isTriangle = Gather(_isTriangle, order);
+        _vertices = Gather(_vertices, order);
+        _lines = Gather(_lines, order);
+        _kind = Gather(_kind, order);
         _castsShadows = Gather(_castsShadows, order);
     }
 
@@ -104,30 +133,51 @@ internal sealed class PrimitiveTable
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public double Distance(int i, in Ray ray, double tMax)
     {
-        if (_isTriangle[i])
+        switch (_kind[i])
         {
-            ref var tri = ref _triangles[i];
-            return TriangleSolver.Distance(ray, tri.V0, tri.E1, tri.E2, tMax);
+            case PrimitiveKind.MollerTrumbore:
+            {
+                ref var tri = ref _triangles[i];
+                return TriangleSolver.Distance(ray, tri.V0, tri.E1, tri.E2, tMax);
+            }
+            case PrimitiveKind.Algebraic:
+            {
+                ref var tri = ref _triangles[i];
+                return AlgebraicTriangleSolver.Distance(ray, tri.V0, tri.E1, tri.E2, tMax);
+            }
+            case PrimitiveKind.Plucker:
+            {
+                ref var tri = ref _vertices[i];
+                return PluckerTriangleSolver.Distance(ray, tri.V0, tri.V1, tri.V2, tMax);
+            }
+            case PrimitiveKind.PluckerEdges:
+                return PluckerTriangleSolver.Distance(ray, PluckerTriangleSolver.RayLine(ray), _lines[i], tMax);
+            default:
+                return Objects[i].Intersect(ray, out double t) && t < tMax ? t : double.PositiveInfinity;
         }
-
-        return Objects[i].Intersect(ray, out double t) && t < tMax ? t : double.PositiveInfinity;
     }
+
+    /// <summary>As <see cref="Distance(int, in Ray, double)"/>, with the ray's Plücker line built once per ray by the caller.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public double Distance(int i, in Ray ray, in PluckerLine rayLine, double tMax) =>
+        _kind[i] == PrimitiveKind.PluckerEdges
+            ? PluckerTriangleSolver.Distance(ray, rayLine, _lines[i], tMax)
+            : Distance(i, ray, tMax);
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public bool Occludes(int i, in Ray ray, in PluckerLine rayLine, double tMax) =>
+        _kind[i] == PrimitiveKind.PluckerEdges
+            ? _castsShadows[i] && PluckerTriangleSolver.Distance(ray, rayLine, _lines[i], tMax) < tMax
+            : Occludes(i, ray, tMax);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public bool Occludes(int i, in Ray ray, double tMax)
     {
-        if (_isTriangle[i])
-        {
-            if (!_castsShadows[i])
-            {
-                return false;
-            }
+        var kind = _kind[i];
+        if (kind == PrimitiveKind.Object)
+            return Objects[i].ShadowHit(ray, out double t) && t < tMax;
 
-            ref var tri = ref _triangles[i];
-            return TriangleSolver.Intersect(ray, tri.V0, tri.E1, tri.E2, tMax, out _, out _, out _);
-        }
-
-        return Objects[i].ShadowHit(ray, out double t) && t < tMax;
+        return _castsShadows[i] && Distance(i, ray, tMax) < tMax;
     }
 
     /// <summary>Nearest hit among the unbounded objects, improving (t, primitive) if closer.</summary>

@@ -48,11 +48,17 @@ internal static class RenderCommand
         var maxDepth = Options.Integer("--max-depth", "Deepest reflection or refraction traced", 0, ViewPlane.DeepestMaxDepth);
         var image = Options.ExistingFile("--image", $"Image ({ImageFile.ReadableFormats}) mapped by the texture-image scene");
         var mesh = Options.ExistingFile("--mesh", "PLY or STL mesh to render in a default studio instead of a scene", ".ply", ".stl");
+        var triangleTest = new Option<string?>("--triangle-test")
+        {
+            Description = $"Ray-triangle test of the --mesh: {string.Join(", ", TriangleTestNames.All)} [default: moller]",
+            HelpName = "TEST",
+        };
+        triangleTest.AcceptOnlyFromAmong([.. TriangleTestNames.All]);
 
         var cameraOptions = new CameraOptions();
         var render = new Command("render", "Renders a built-in scene, or a mesh file in a studio, to a PNG or HDR image.")
         {
-            scene, output, width, height, samples, seed, threads, maxDepth, image, mesh,
+            scene, output, width, height, samples, seed, threads, maxDepth, image, mesh, triangleTest,
         };
         foreach (var option in cameraOptions.All)
             render.Options.Add(option);
@@ -63,6 +69,8 @@ internal static class RenderCommand
             var imageGiven = result.GetResult(image) is not null;
             if (meshGiven && sceneGiven)
                 result.AddError($"--mesh renders the mesh in its own studio; do not name a scene ('{result.GetValue(scene)}') as well");
+            else if (result.GetResult(triangleTest) is not null && !meshGiven)
+                result.AddError("--triangle-test applies to --mesh only");
             else if (imageGiven && (meshGiven || !(SceneFactory.TryCreate(result.GetValue(scene) ?? SceneFactory.DefaultSceneName, out var chosen) && chosen.UsesImage)))
                 result.AddError($"--image applies to the texture-image scene only");
         });
@@ -73,6 +81,7 @@ internal static class RenderCommand
             {
                 SceneName = parsed.GetValue(scene) ?? SceneFactory.DefaultSceneName,
                 MeshPath = parsed.GetValue(mesh),
+                TriangleTest = TriangleTestNames.TryParse(parsed.GetValue(triangleTest), out var test) ? test : TriangleTest.MollerTrumbore,
                 Output = parsed.GetValue(output)!,
                 Settings = new SceneSettings
                 {
@@ -95,6 +104,7 @@ internal static class RenderCommand
     {
         public required string SceneName { get; init; }
         public required string? MeshPath { get; init; }
+        public required TriangleTest TriangleTest { get; init; }
         public required string Output { get; init; }
         public required SceneSettings Settings { get; init; }
         public required ulong Seed { get; init; }
@@ -109,6 +119,7 @@ internal static class RenderCommand
         {
             if (MeshInput.Read(meshPath, stderr) is not { } mesh)
                 return Application.Failure;
+            mesh.TriangleTest = request.TriangleTest;
             scene = new MeshStudioScene(mesh, meshPath);
         }
         else if (!SceneFactory.TryCreate(request.SceneName, out scene!))

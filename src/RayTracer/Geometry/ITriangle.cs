@@ -1,3 +1,4 @@
+using RayTracer.Geometry.Meshes;
 using RayTracer.Maths;
 
 namespace RayTracer.Geometry;
@@ -13,4 +14,7 @@ public interface ITriangle
     Point3D V1 { get; }
 
     Point3D V2 { get; }
+
+    /// <summary>The ray–triangle test to run on this triangle.</summary>
+    TriangleTest Test => TriangleTest.MollerTrumbore;
 }

@@ -11,9 +11,8 @@ public static class ExperimentsCommand
     public static Command Create(TextWriter stdout, TextWriter stderr)
     {
         var experiments = new Command("experiments", "Runs the intersection-method experiments and writes their reports.");
-        _ = stdout;
-        _ = stderr;
-        experiments.Add(InstancingCommand.Create(stdout, stderr));
+        experiments.Subcommands.Add(InstancingCommand.Create(stdout, stderr));
+        experiments.Subcommands.Add(TrianglesCommand.Create(stdout, stderr));
         return experiments;
     }
 }

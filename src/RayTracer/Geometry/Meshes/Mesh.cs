@@ -55,6 +55,12 @@ public sealed class Mesh : ObjectNature
     public int TriangleCount => Indices.Length / 3;
 
     /// <summary>
+    /// The ray–triangle test of this mesh's triangles (Möller–Trumbore unless set). Triangles take it
+    /// when <see cref="CreateTriangles"/> makes them, so set it before.
+    /// </summary>
+    public TriangleTest TriangleTest { get; set; } = TriangleTest.MollerTrumbore;
+
+    /// <summary>
     /// Problems the reader tolerated in the file this mesh came from, each as <c>file(line): message</c>;
     /// empty for meshes built in code.
     /// </summary>

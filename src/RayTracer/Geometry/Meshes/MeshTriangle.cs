@@ -10,7 +10,9 @@ namespace RayTracer.Geometry.Meshes;
 
 /// <summary>
 /// Triangle <see cref="Index"/> of a <see cref="Mesh"/>. Flat triangles use the face normal; smooth
-/// ones interpolate the vertex normals with the barycentric coordinates of the hit.
+/// ones interpolate the vertex normals with the barycentric coordinates of the hit. The test is the
+/// mesh's <see cref="Mesh.TriangleTest"/> when the triangle is created, kept so that an acceleration
+/// structure built over it and the triangle's own hit test always run the same arithmetic.
 /// </summary>
 public sealed class MeshTriangle : GeometricObject, ITriangle
 {
@@ -28,6 +30,7 @@ public sealed class MeshTriangle : GeometricObject, ITriangle
 
         Index = index;
         Smooth = smooth;
+        Test = mesh.TriangleTest;
         _i0 = mesh.Indices[3 * index];
         _i1 = mesh.Indices[3 * index + 1];
         _i2 = mesh.Indices[3 * index + 2];
@@ -49,6 +52,8 @@ public sealed class MeshTriangle : GeometricObject, ITriangle
 
     public Point3D V2 => Mesh.Vertices[_i2];
 
+    public TriangleTest Test { get; }
+
     /// <summary>Falls back to the mesh's shared material.</summary>
     public override Material? Material
     {
@@ -58,8 +63,20 @@ public sealed class MeshTriangle : GeometricObject, ITriangle
 
     public override bool Intersect(in Ray ray, out double t)
     {
-        var v0 = V0;
-        return TriangleSolver.Intersect(ray, v0, V1 - v0, V2 - v0, double.PositiveInfinity, out t, out _, out _);
+        return Solve(ray, out t, out _, out _);
+    }
+
+    /// <summary>The mesh's test on this triangle: hit distance and the barycentrics of V1 (beta) and V2 (gamma).</summary>
+    public bool Solve(in Ray ray, out double t, out double beta, out double gamma)
+    {
+        Point3D v0 = V0, v1 = V1, v2 = V2;
+        return Test switch
+        {
+            TriangleTest.Algebraic => AlgebraicTriangleSolver.Intersect(ray, v0, v1 - v0, v2 - v0, double.PositiveInfinity, out t, out beta, out gamma),
+            TriangleTest.Plucker => PluckerTriangleSolver.Intersect(ray, v0, v1, v2, double.PositiveInfinity, out t, out beta, out gamma),
+            TriangleTest.PluckerEdges => PluckerTriangleSolver.Intersect(ray, PluckerTriangle.From(v0, v1, v2), double.PositiveInfinity, out t, out beta, out gamma),
+            _ => TriangleSolver.Intersect(ray, v0, v1 - v0, v2 - v0, double.PositiveInfinity, out t, out beta, out gamma),
+        };
     }
 
     /// <summary>False when either this triangle or its mesh is set not to cast shadows.</summary>
@@ -82,9 +99,7 @@ public sealed class MeshTriangle : GeometricObject, ITriangle
 
     public override bool Hit(in Ray ray, out double tmin, ShadingRecord sr)
     {
-        var v0 = V0;
-        Vector3D e1 = V1 - v0, e2 = V2 - v0;
-        if (!TriangleSolver.Intersect(ray, v0, e1, e2, double.PositiveInfinity, out tmin, out double beta, out double gamma))
+        if (!Solve(ray, out tmin, out double beta, out double gamma))
         {
             return false;
         }
@@ -98,7 +113,8 @@ public sealed class MeshTriangle : GeometricObject, ITriangle
         }
         else
         {
-            n = TriangleNormal.OfEdges(e1, e2);
+            var v0 = V0;
+            n = TriangleNormal.OfEdges(V1 - v0, V2 - v0);
         }
 
         sr.Normal = n.Normalized();

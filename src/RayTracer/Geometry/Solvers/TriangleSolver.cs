@@ -19,6 +19,7 @@ public static class TriangleSolver
         in Ray ray, in Point3D v0, in Vector3D e1, in Vector3D e2, double tMax,
         out double t, out double beta, out double gamma)
     {
+        TriangleTestCounters.MollerTrumbore.Increment();
         // p = d × e2
         double px = ray.d.y * e2.z - ray.d.z * e2.y;
         double py = ray.d.z * e2.x - ray.d.x * e2.z;
@@ -59,6 +60,7 @@ public static class TriangleSolver
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static double Distance(in Ray ray, in Point3D v0, in Vector3D e1, in Vector3D e2, double tMax)
     {
+        TriangleTestCounters.MollerTrumbore.Increment();
         double px = ray.d.y * e2.z - ray.d.z * e2.y;
         double py = ray.d.z * e2.x - ray.d.x * e2.z;
         double pz = ray.d.x * e2.y - ray.d.y * e2.x;
