@@ -2,6 +2,7 @@ using System.Diagnostics.CodeAnalysis;
 using RayTracer.Scenes;
 using RayTracer.Scenes.Cameras;
 using RayTracer.Scenes.Gpcm;
+using RayTracer.Scenes.Instancing;
 using RayTracer.Scenes.Lighting;
 using RayTracer.Scenes.Meshes;
 using RayTracer.Scenes.Primitives;
@@ -62,6 +63,10 @@ public static class SceneFactory
         () => new TwisterEpitrochoidsScene(),
         () => new TwisterRoulettesScene(),
         () => new TwisterSurfacesScene(),
+        () => new InstancingBlocksScene(),
+        () => new InstancingHelixScene(),
+        () => new InstancingEpitrochoidScene(),
+        () => new InstancingColumnScene(),
     ];
 
     /// <summary>Fresh instances of every scene, in listing order.</summary>

@@ -109,7 +109,10 @@ public static class PluckerTriangleSolver
         //GMac.Bind("v2", "PgaVector3D", b);
         //GMac.Bind("v3", "PgaVector3D", c);
         //GMac.Bind("tn.1", "<tn>");
-        tn = c.y * (a.x * b.z - a.z * b.x) + c.z * (a.y * b.x - a.x * b.y) + c.x * (a.z * b.y - a.y * b.z);
+        double tmp0 = a.x - b.x;
+        double tmp1 = a.y - b.y;
+        double tmp2 = a.z - b.z;
+        tn = -((c.x - a.x) * (tmp1 * a.z - tmp2 * a.y) + (c.y - a.y) * (tmp2 * a.x - tmp0 * a.z) + (c.z - a.z) * (tmp0 * a.y - tmp1 * a.x));
         #endregion
 
         return Finish(d1, d2, d3, tn, tMax, out beta, out gamma);
