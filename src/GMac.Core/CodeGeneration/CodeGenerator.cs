@@ -35,7 +35,7 @@ public static class CodeGenerator
             // Optimizing a fully expanded block is the slowest step; skip it when it starts far
             // costlier than a form already found (sharing rarely recovers more than that).
             var bestSoFar = candidates.Count == 0 ? int.MaxValue : candidates.Min(c => c.Block.Statistics().Cost);
-            if (joined.Statistics().Cost <= HopelessFactor * (long)bestSoFar)
+            if (Rewrites.SharedCost.Of(joined) <= HopelessFactor * (long)bestSoFar)
                 candidates.Add((Optimizer.Optimize(joined), JoinMode.Joined));
         }
         // The cheapest form wins; on a tie, the one with fewer temporaries, then the joined (simplest) form.
@@ -60,7 +60,7 @@ public static class CodeGenerator
             s = simplify(s);
             for (var round = 0; round < 4; round++)
             {
-                var reduced = HalfAngleReduction.Apply(InverseCancellation.CancelDeep(s));
+                var reduced = HalfAngleReduction.Apply(Rewrites.PartialInverseCancellation.Apply(InverseCancellation.CancelDeep(s)));
                 if (ReferenceEquals(reduced, s)) break;
                 s = simplify(reduced);
             }

@@ -29,6 +29,7 @@ public sealed class Optimizer
             if ((block.Statistics(), block.Statements.Count) == before) break;
         }
         block = strength.Run(block); // CSE may expose repeated denominators
+        block = new SquareRootReciprocalPass().Run(new ConstantAbsorptionPass().Run(block));
         return reuseTemporaries ? new TemporaryReusePass().Run(block) : block;
     }
 }

@@ -13,7 +13,12 @@ public static class ScalarLowering
 {
     private sealed record PolyTerm(Rational Coefficient, Dictionary<Atom, int> Powers);
 
-    public static Expr Lower(Scalar s) => LowerSum(s.Terms.Select(ToPolyTerm).ToList());
+    public static Expr Lower(Scalar s)
+    {
+        if (Rewrites.AngleZeroSplit.TrySplit(s, out var atZero, out var cosine, out var cofactor))
+            return ExprFactory.Sum(Lower(atZero), ExprFactory.Product(ExprFactory.Sum(LowerAtom(cosine), ConstantExpr.From(-1)), Lower(cofactor)));
+        return LowerSum(s.Terms.Select(ToPolyTerm).ToList());
+    }
 
     private static PolyTerm ToPolyTerm(Term t) =>
         new(t.Coefficient, t.Monomial.Factors.ToDictionary(f => f.Atom, f => f.Power));
