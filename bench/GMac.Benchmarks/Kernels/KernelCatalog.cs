@@ -1,6 +1,6 @@
 namespace GMac.Benchmarks.Kernels;
 
-/// <summary>The thirteen kernels of the suite, in the order of the report.</summary>
+/// <summary>The kernels of the suite, in the order of the report.</summary>
 public static class KernelCatalog
 {
     private static readonly Func<IGaKernel>[] Factories =
@@ -18,6 +18,7 @@ public static class KernelCatalog
         () => new NormalToVectorsKernel(),
         () => new SphereThroughPointsKernel(),
         () => new ApplyTwistToPoint3DKernel(),
+        () => new RotateAboutAxisThroughPoint3DKernel(),
     ];
 
     public static IReadOnlyList<string> Names { get; } = Factories.Select(f => f().MacroName).ToArray();
