@@ -60,19 +60,19 @@ public sealed class GramSchmidtRejectionKernel : GaKernel<Vec3Triple, Vec3Triple
         double tmp7 = tmp0 * tmp5 + tmp1 * tmp6;
         double tmp8 = tmp2 * tmp6 - tmp0 * tmp4;
         double tmp9 = -(tmp1 * tmp4) - tmp2 * tmp5;
-        double tmp10 = tmp8 * v.A.x - tmp7 * v.A.y;
-        double tmp11 = tmp9 * v.A.x - tmp7 * v.A.z;
-        double tmp12 = tmp9 * v.A.y - tmp8 * v.A.z;
+        double tmp10 = v.A.y * tmp7 - v.A.x * tmp8;
+        double tmp11 = v.A.x * tmp9 - v.A.z * tmp7;
+        double tmp12 = v.A.y * tmp9 - v.A.z * tmp8;
         w.A.x = v.A.x;
         w.A.y = v.A.y;
         w.A.z = v.A.z;
         w.B.x = tmp7;
         w.B.y = tmp8;
         w.B.z = tmp9;
-        double tmp13 = (tmp7 * (v.A.z * v.C.y - v.A.y * v.C.z) + tmp8 * (v.A.x * v.C.z - v.A.z * v.C.x) + tmp9 * (v.A.y * v.C.x - v.A.x * v.C.y)) / (tmp10 * tmp10 + tmp11 * tmp11 + tmp12 * tmp12);
+        double tmp13 = (v.C.x * tmp12 - v.C.y * tmp11 - v.C.z * tmp10) / (tmp10 * tmp10 + tmp11 * tmp11 + tmp12 * tmp12);
         w.C.x = tmp12 * tmp13;
         w.C.y = -(tmp11 * tmp13);
-        w.C.z = tmp10 * tmp13;
+        w.C.z = -(tmp10 * tmp13);
         #endregion
     }
 

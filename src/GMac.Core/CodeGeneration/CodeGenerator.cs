@@ -93,12 +93,13 @@ public static class CodeGenerator
         if (verbatimCount == 0) SymbolicInliner.Inline(assignments, simplify);
 
         var known = new HashSet<string>(inputs, StringComparer.Ordinal);
+        var spread = Rewrites.AtomSpread.Of(assignments.Where(a => a.IsOutput).Select(a => a.Value));
         Expr Lower(Scalar s, string where)
         {
             var unknown = s.Variables.Where(v => !known.Contains(v)).ToArray();
             if (unknown.Length > 0)
                 throw new InvalidOperationException($"{where} reads {string.Join(", ", unknown.Select(u => $"'{u}'"))}, which no input binding supplies.");
-            return ScalarLowering.Lower(s);
+            return ScalarLowering.Lower(s, spread);
         }
 
         var statements = new List<CodeStatement>();
