@@ -57,22 +57,16 @@ public sealed class GramSchmidtRejectionKernel : GaKernel<Vec3Triple, Vec3Triple
         double tmp4 = v.A.x * tmp3;
         double tmp5 = v.A.y * tmp3;
         double tmp6 = v.A.z * tmp3;
-        double tmp7 = tmp0 * tmp5 + tmp1 * tmp6;
-        double tmp8 = tmp2 * tmp6 - tmp0 * tmp4;
-        double tmp9 = -(tmp1 * tmp4) - tmp2 * tmp5;
-        double tmp10 = v.A.y * tmp7 - v.A.x * tmp8;
-        double tmp11 = v.A.x * tmp9 - v.A.z * tmp7;
-        double tmp12 = v.A.y * tmp9 - v.A.z * tmp8;
         w.A.x = v.A.x;
         w.A.y = v.A.y;
         w.A.z = v.A.z;
-        w.B.x = tmp7;
-        w.B.y = tmp8;
-        w.B.z = tmp9;
-        double tmp13 = (v.C.x * tmp12 - v.C.y * tmp11 - v.C.z * tmp10) / (tmp10 * tmp10 + tmp11 * tmp11 + tmp12 * tmp12);
-        w.C.x = tmp12 * tmp13;
-        w.C.y = -(tmp11 * tmp13);
-        w.C.z = -(tmp10 * tmp13);
+        w.B.x = tmp0 * tmp5 + tmp1 * tmp6;
+        w.B.y = tmp2 * tmp6 - tmp0 * tmp4;
+        w.B.z = -(tmp1 * tmp4) - tmp2 * tmp5;
+        double tmp7 = (v.C.y * tmp1 - v.C.x * tmp2 - v.C.z * tmp0) / (tmp0 * tmp0 + tmp1 * tmp1 + tmp2 * tmp2);
+        w.C.x = -(tmp2 * tmp7);
+        w.C.y = tmp1 * tmp7;
+        w.C.z = -(tmp0 * tmp7);
         #endregion
     }
 

@@ -17,6 +17,7 @@ public sealed class Optimizer
         var factor = new SumFactoringPass();
 
         block = dead.Run(copy.Run(fold.Run(block)));
+        block = dead.Run(new AlgebraicValueNumberingPass().Run(block));
         block = fold.Run(strength.Run(block));
         for (var round = 0; round < 8; round++)
         {

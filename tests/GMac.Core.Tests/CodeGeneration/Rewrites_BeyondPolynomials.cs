@@ -167,4 +167,35 @@ public class Rewrites_BeyondPolynomials
             Assert.Equal(o2.Evaluate(values), outputs["o2"], 12);
         }
     }
+    [Fact]
+    public void Value_numbering_finds_a_wedge_that_a_rejection_leaves_unchanged()
+    {
+        // t1 = (a, b) ∧ rejection of (c, d) from (a, b) = (a, b) ∧ (c, d) = t2, through a division
+        var k = Quotient(Sum(Product(A, C), Product(B, D)), Sum(Product(A, A), Product(B, B)));
+        var before = Block(
+            Temp("t2", Difference(Product(A, D), Product(B, C))),
+            Temp("k", k),
+            Temp("p", Difference(C, Product(A, Variable("k")))),
+            Temp("q", Difference(D, Product(B, Variable("k")))),
+            Temp("t1", Difference(Product(A, Variable("q")), Product(B, Variable("p")))),
+            Out("o1", Product(Variable("t1"), C)),
+            Out("o2", Product(Variable("t2"), D)));
+
+        var after = new DeadCodePass().Run(new AlgebraicValueNumberingPass().Run(before));
+
+        AssertSameOutputs(before, after);
+        var (b, a) = (before.Statistics(), after.Statistics());
+        Assert.Equal((6, 12, 1), (b.Additions, b.Multiplications, b.Divisions));
+        Assert.Equal((1, 4, 0), (a.Additions, a.Multiplications, a.Divisions));
+    }
+
+    [Fact]
+    public void Value_numbering_keeps_temporaries_whose_values_differ()
+    {
+        var before = Block(
+            Temp("t1", Difference(Product(A, D), Product(B, C))),
+            Temp("t2", Sum(Product(A, D), Product(B, C))),
+            Out("o", Product(Variable("t1"), Variable("t2"))));
+        Assert.Same(before, new AlgebraicValueNumberingPass().Run(before));
+    }
 }
