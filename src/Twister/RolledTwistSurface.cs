@@ -48,14 +48,13 @@ public sealed class RolledTwistSurface : IParametricSurface
         double tmp0 = 1.0 - v;
         s.x = p1.x * tmp0 + v * p2.x;
         s.y = p1.y * tmp0 + v * p2.y;
-        double tmp1 = p2.z - p1.z;
-        s.z = v * tmp1 + p1.z;
-        gu.x = v * (t2.x - t1.x) + t1.x;
-        gu.y = v * (t2.y - t1.y) + t1.y;
-        gu.z = v * (t2.z - t1.z) + t1.z;
+        s.z = p1.z * tmp0 + v * p2.z;
+        gu.x = t1.x * tmp0 + v * t2.x;
+        gu.y = t1.y * tmp0 + t2.y * v;
+        gu.z = t1.z * tmp0 + t2.z * v;
         gv.x = p2.x - p1.x;
         gv.y = p2.y - p1.y;
-        gv.z = tmp1;
+        gv.z = p2.z - p1.z;
         #endregion
 
         su = gu;

@@ -20,9 +20,9 @@ internal static class RotationKernels
         double tmp2 = axis.x * d.y - axis.y * d.x;
         double tmp3 = Math.Cos(angle) - 1.0;
         double tmp4 = Math.Sin(angle);
-        y.x = tmp0 * tmp4 + d.x - (tmp2 * axis.y - tmp1 * axis.z) * tmp3;
-        y.y = tmp1 * tmp4 + d.y - (tmp0 * axis.z - tmp2 * axis.x) * tmp3;
-        y.z = tmp2 * tmp4 + d.z - (tmp1 * axis.x - tmp0 * axis.y) * tmp3;
+        y.x = tmp0 * tmp4 + d.x + tmp3 * (tmp1 * axis.z - tmp2 * axis.y);
+        y.y = tmp1 * tmp4 + d.y + tmp3 * (tmp2 * axis.x - tmp0 * axis.z);
+        y.z = tmp2 * tmp4 + d.z + tmp3 * (tmp0 * axis.y - tmp1 * axis.x);
         #endregion
 
         return y;
@@ -38,16 +38,13 @@ internal static class RotationKernels
         //GMac.Bind("angle.1", angle);
         //GMac.Bind("b", "Bivector3D", b);
         //GMac.Bind("y", "Bivector3D", y);
-        double tmp0 = Math.Cos(angle);
+        double tmp0 = Math.Cos(angle) - 1.0;
         double tmp1 = Math.Sin(angle);
-        double tmp2 = b.xy * axis.z + b.yz * axis.x + b.zx * axis.y;
-        double tmp3 = tmp2 - tmp2 * tmp0;
-        double tmp4 = b.yz * axis.y - b.zx * axis.x;
-        y.xy = axis.z * tmp3 + b.xy * tmp0 - tmp1 * tmp4;
-        double tmp5 = tmp0 - 1.0;
-        double tmp6 = b.xy * axis.x - b.yz * axis.z;
-        y.yz = axis.y * (tmp5 * tmp4 + b.xy * tmp1) + axis.z * (-(tmp5 * tmp6) - b.zx * tmp1) + b.yz;
-        y.zx = axis.y * tmp3 + b.zx * tmp0 - tmp1 * tmp6;
+        double tmp2 = b.xy * axis.z + b.zx * axis.y;
+        double tmp3 = -(b.yz * axis.x) - tmp2;
+        y.xy = tmp1 * (axis.x * b.zx - axis.y * b.yz) + b.xy + tmp0 * (axis.z * tmp3 + b.xy);
+        y.yz = tmp1 * (axis.y * b.xy - axis.z * b.zx) + b.yz + tmp0 * (b.yz * (axis.y * axis.y + axis.z * axis.z) - axis.x * tmp2);
+        y.zx = tmp1 * (axis.z * b.yz - axis.x * b.xy) + b.zx + tmp0 * (axis.y * tmp3 + b.zx);
         #endregion
 
         return y;

@@ -19,6 +19,7 @@ public static class KernelCatalog
         () => new SphereThroughPointsKernel(),
         () => new ApplyTwistToPoint3DKernel(),
         () => new SquaredDistanceKernel(),
+        () => new RotateAboutAxisThroughPoint3DKernel(),
     ];
 
     public static IReadOnlyList<string> Names { get; } = Factories.Select(f => f().MacroName).ToArray();

@@ -52,24 +52,27 @@ public sealed class RotorToMatrixKernel : GaKernel<Rotor3, Vec3Triple>
         //GMac.Bind("c1", "Vector3D", "m.A");
         //GMac.Bind("c2", "Vector3D", "m.B");
         //GMac.Bind("c3", "Vector3D", "m.C");
-        double tmp0 = q.z * q.z;
-        double tmp1 = q.y * q.y;
-        m.A.x = 1.0 - 2.0 * (tmp1 + tmp0);
-        double tmp2 = q.y * q.x;
-        double tmp3 = q.z * q.w;
-        m.A.y = 2.0 * (tmp2 - tmp3);
-        double tmp4 = q.z * q.x;
-        double tmp5 = q.y * q.w;
-        m.A.z = 2.0 * (tmp5 + tmp4);
-        m.B.x = 2.0 * (tmp3 + tmp2);
-        double tmp6 = q.x * q.x;
-        m.B.y = 1.0 - 2.0 * (tmp6 + tmp0);
-        double tmp7 = q.z * q.y;
-        double tmp8 = q.x * q.w;
-        m.B.z = 2.0 * (tmp7 - tmp8);
-        m.C.x = 2.0 * (tmp4 - tmp5);
-        m.C.y = 2.0 * (tmp8 + tmp7);
-        m.C.z = 1.0 - 2.0 * (tmp6 + tmp1);
+        double tmp0 = q.x + q.x;
+        double tmp1 = q.y + q.y;
+        double tmp2 = q.z + q.z;
+        double tmp3 = q.z * tmp2;
+        double tmp4 = q.y * tmp1;
+        m.A.x = 1.0 - tmp4 - tmp3;
+        double tmp5 = q.x * tmp1;
+        double tmp6 = q.w * tmp2;
+        m.A.y = tmp5 - tmp6;
+        double tmp7 = q.x * tmp2;
+        double tmp8 = q.w * tmp1;
+        m.A.z = tmp8 + tmp7;
+        m.B.x = tmp6 + tmp5;
+        double tmp9 = q.x * tmp0;
+        m.B.y = 1.0 - tmp9 - tmp3;
+        double tmp10 = q.y * tmp2;
+        double tmp11 = q.w * tmp0;
+        m.B.z = tmp10 - tmp11;
+        m.C.x = tmp7 - tmp8;
+        m.C.y = tmp11 + tmp10;
+        m.C.z = 1.0 - tmp9 - tmp4;
         #endregion
     }
 

@@ -61,8 +61,11 @@ public sealed class SkewLinesClosestPointsKernel : GaKernel<LinePair, LineParame
         double tmp7 = -(tmp3 * tmp6);
         double tmp8 = -(tmp4 * tmp6);
         double tmp9 = -(tmp5 * tmp6);
-        t.T1 = tmp0 * (-(tmp7 * l.D2.y) - tmp8 * l.D2.z) + tmp1 * (tmp7 * l.D2.x - tmp9 * l.D2.z) + tmp2 * (tmp8 * l.D2.x + tmp9 * l.D2.y);
-        t.T2 = tmp0 * (-(tmp7 * l.D1.y) - tmp8 * l.D1.z) + tmp1 * (tmp7 * l.D1.x - tmp9 * l.D1.z) + tmp2 * (tmp8 * l.D1.x + tmp9 * l.D1.y);
+        double tmp10 = tmp9 * tmp2 - tmp0 * tmp7;
+        double tmp11 = tmp2 * tmp8 + tmp1 * tmp7;
+        double tmp12 = tmp9 * tmp1 + tmp0 * tmp8;
+        t.T1 = l.D2.y * tmp10 + l.D2.x * tmp11 - l.D2.z * tmp12;
+        t.T2 = l.D1.x * tmp11 + l.D1.y * tmp10 - l.D1.z * tmp12;
         #endregion
     }
 

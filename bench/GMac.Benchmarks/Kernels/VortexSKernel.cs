@@ -47,19 +47,10 @@ public sealed class VortexSKernel : GaKernel<VortexInput, Vec3>
         //GMac.Bind("omega.1", "<x.Omega>");
         //GMac.Bind("gamma.1", "<x.Gamma>");
         //GMac.Bind("v", "Vector3D", "v");
-        double tmp0 = x.A.z * x.A.z;
-        double tmp1 = x.A.x * x.A.x;
-        double tmp2 = x.A.y * x.A.y + tmp0;
-        double tmp3 = -tmp1 - tmp2;
-        double tmp4 = -(1.0 / tmp3);
-        double tmp5 = x.A.x * x.P.x;
-        double tmp6 = x.A.y * x.P.y;
-        double tmp7 = x.P.z * tmp3;
-        double tmp8 = x.Omega * (x.A.z * x.P.z + tmp6 + tmp5);
-        v.x = (x.Gamma * (x.A.y * (-tmp7 - x.A.z * tmp6) + x.P.y * x.A.z * (-tmp1 - tmp0)) + x.A.x * tmp8) * tmp4;
-        double tmp9 = x.P.x * tmp2;
-        v.y = (x.Gamma * (x.A.x * (tmp7 + x.A.z * tmp5) + x.A.z * tmp9) + x.A.y * tmp8) * tmp4;
-        v.z = (x.Gamma * (x.A.x * (-(x.P.y * tmp3) - x.A.y * tmp5) - x.A.y * tmp9) + x.A.z * tmp8) * tmp4;
+        double tmp0 = x.Omega * (x.A.z * x.P.z + x.A.y * x.P.y + x.A.x * x.P.x) / (x.A.x * x.A.x + x.A.y * x.A.y + x.A.z * x.A.z);
+        v.x = x.A.x * tmp0 + x.Gamma * (x.P.z * x.A.y - x.P.y * x.A.z);
+        v.y = x.A.y * tmp0 + x.Gamma * (x.P.x * x.A.z - x.P.z * x.A.x);
+        v.z = x.A.z * tmp0 + x.Gamma * (x.P.y * x.A.x - x.P.x * x.A.y);
         #endregion
     }
 

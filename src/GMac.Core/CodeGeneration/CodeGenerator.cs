@@ -36,7 +36,7 @@ public static class CodeGenerator
             // Optimizing a fully expanded block is the slowest step; skip it when it starts far
             // costlier than a form already found (sharing rarely recovers more than that).
             var bestSoFar = candidates.Count == 0 ? int.MaxValue : candidates.Min(c => c.Block.Statistics().Cost);
-            if (joined.Statistics().Cost <= HopelessFactor * (long)bestSoFar)
+            if (Rewrites.SharedCost.Of(joined) <= HopelessFactor * (long)bestSoFar)
                 candidates.Add((Optimizer.Optimize(joined), JoinMode.Joined));
         }
         // The cheapest form wins unless it is far less accurate; on a tie, the one with fewer temporaries, then the joined (simplest) form.
@@ -62,7 +62,7 @@ public static class CodeGenerator
             s = simplify(s);
             for (var round = 0; round < 4; round++)
             {
-                var reduced = HalfAngleReduction.Apply(InverseCancellation.CancelDeep(s));
+                var reduced = HalfAngleReduction.Apply(Rewrites.PartialInverseCancellation.Apply(InverseCancellation.CancelDeep(s)));
                 if (ReferenceEquals(reduced, s)) break;
                 s = simplify(reduced);
             }
@@ -95,12 +95,13 @@ public static class CodeGenerator
         if (verbatimCount == 0) SymbolicInliner.Inline(assignments, simplify);
 
         var known = new HashSet<string>(inputs, StringComparer.Ordinal);
+        var spread = Rewrites.AtomSpread.Of(assignments.Where(a => a.IsOutput).Select(a => a.Value));
         Expr Lower(Scalar s, string where)
         {
             var unknown = s.Variables.Where(v => !known.Contains(v)).ToArray();
             if (unknown.Length > 0)
                 throw new InvalidOperationException($"{where} reads {string.Join(", ", unknown.Select(u => $"'{u}'"))}, which no input binding supplies.");
-            return ScalarLowering.Lower(s);
+            return ScalarLowering.Lower(s, spread);
         }
 
         var statements = new List<CodeStatement>();

@@ -18,6 +18,7 @@ public sealed class Optimizer
 
         block = new TranslationInvariancePass().Run(block); // before any pass shapes sums for sharing
         block = dead.Run(copy.Run(fold.Run(block)));
+        block = dead.Run(new AlgebraicValueNumberingPass().Run(block));
         block = fold.Run(strength.Run(block));
         for (var round = 0; round < 8; round++)
         {
@@ -30,6 +31,7 @@ public sealed class Optimizer
             if ((block.Statistics(), block.Statements.Count) == before) break;
         }
         block = strength.Run(block); // CSE may expose repeated denominators
+        block = new SquareRootReciprocalPass().Run(new ConstantAbsorptionPass().Run(block));
         return reuseTemporaries ? new TemporaryReusePass().Run(block) : block;
     }
 }

@@ -13,12 +13,25 @@ public static class ScalarLowering
 {
     private sealed record PolyTerm(Rational Coefficient, Dictionary<Atom, int> Powers);
 
-    public static Expr Lower(Scalar s) => LowerSum(s.Terms.Select(ToPolyTerm).ToList());
+    public static Expr Lower(Scalar s) => Lower(s, null);
+
+    /// <param name="spread">
+    /// For each atom, how many statements of the block read it. Between atoms shared by as many
+    /// terms, the one fewer statements read goes out first, so what is left inside is the part
+    /// the statements have in common and common-subexpression elimination can share it
+    /// (t₁ = d₂·u and t₂ = d₁·u with u = d⌋B computed once).
+    /// </param>
+    public static Expr Lower(Scalar s, IReadOnlyDictionary<Atom, int>? spread)
+    {
+        if (Rewrites.AngleZeroSplit.TrySplit(s, out var atZero, out var cosine, out var cofactor))
+            return ExprFactory.Sum(Lower(atZero, spread), ExprFactory.Product(ExprFactory.Sum(LowerAtom(cosine), ConstantExpr.From(-1)), Lower(cofactor, spread)));
+        return LowerSum(s.Terms.Select(ToPolyTerm).ToList(), spread);
+    }
 
     private static PolyTerm ToPolyTerm(Term t) =>
         new(t.Coefficient, t.Monomial.Factors.ToDictionary(f => f.Atom, f => f.Power));
 
-    private static Expr LowerSum(List<PolyTerm> terms)
+    private static Expr LowerSum(List<PolyTerm> terms, IReadOnlyDictionary<Atom, int>? spread)
     {
         if (terms.Count == 0) return ConstantExpr.Zero;
         if (terms.Count == 1) return LowerTerm(terms[0]);
@@ -26,10 +39,10 @@ public static class ScalarLowering
         // A numeric factor common to all terms: 2xy − 2wz → 2(xy − wz).
         var magnitude = terms[0].Coefficient.Abs();
         if (!magnitude.IsOne && terms.All(t => t.Coefficient.Abs() == magnitude))
-            return FactorCoefficient(terms, magnitude);
+            return FactorCoefficient(terms, magnitude, spread);
 
-        var best = BestSharedAtom(terms);
-        if (best is null) return LowerByCoefficientGroups(terms);
+        var best = BestSharedAtom(terms, spread);
+        if (best is null) return LowerByCoefficientGroups(terms, spread);
 
         var with = new List<PolyTerm>();
         var without = new List<PolyTerm>();
@@ -44,16 +57,16 @@ public static class ScalarLowering
             else without.Add(t);
         }
         var factored = best.Kind == AtomKind.Inverse
-            ? ExprFactory.Quotient(LowerSum(with), Lower(best.Arguments[0]))
-            : ExprFactory.Product(LowerAtom(best), LowerSum(with));
-        return without.Count == 0 ? factored : ExprFactory.Sum(factored, LowerSum(without));
+            ? ExprFactory.Quotient(LowerSum(with, spread), Lower(best.Arguments[0]))
+            : ExprFactory.Product(LowerAtom(best), LowerSum(with, spread));
+        return without.Count == 0 ? factored : ExprFactory.Sum(factored, LowerSum(without, spread));
     }
 
     /// <summary>
     /// With no atom to share, terms with the same coefficient magnitude share it instead:
     /// 1 − 2y² − 2z² → 1 − 2(y² + z²), one product fewer.
     /// </summary>
-    private static Expr LowerByCoefficientGroups(List<PolyTerm> terms)
+    private static Expr LowerByCoefficientGroups(List<PolyTerm> terms, IReadOnlyDictionary<Atom, int>? spread)
     {
         var group = terms.Where(t => !t.Coefficient.Abs().IsOne)
             .GroupBy(t => t.Coefficient.Abs())
@@ -62,20 +75,20 @@ public static class ScalarLowering
             .FirstOrDefault();
         if (group is null) return ExprFactory.Sum(terms.Select(LowerTerm));
         var magnitude = group.Key;
-        var grouped = FactorCoefficient(group.ToList(), magnitude);
+        var grouped = FactorCoefficient(group.ToList(), magnitude, spread);
         var others = terms.Where(t => t.Coefficient.Abs() != magnitude).ToList();
-        return others.Count == 0 ? grouped : ExprFactory.Sum(grouped, LowerSum(others));
+        return others.Count == 0 ? grouped : ExprFactory.Sum(grouped, LowerSum(others, spread));
     }
 
     /// <summary>c·(Σ tᵢ/c), with c taking the sign when every term is negative: −2y² − 2z² → −2(y² + z²).</summary>
-    private static Expr FactorCoefficient(List<PolyTerm> terms, Rational magnitude)
+    private static Expr FactorCoefficient(List<PolyTerm> terms, Rational magnitude, IReadOnlyDictionary<Atom, int>? spread)
     {
         var factor = terms.All(t => t.Coefficient.Sign < 0) ? -magnitude : magnitude;
-        return ExprFactory.Product(ConstantExpr.From(factor), LowerSum(terms.Select(t => t with { Coefficient = t.Coefficient / factor }).ToList()));
+        return ExprFactory.Product(ConstantExpr.From(factor), LowerSum(terms.Select(t => t with { Coefficient = t.Coefficient / factor }).ToList(), spread));
     }
 
     /// <summary>The atom with a positive power in the most terms (at least two), ties to the canonical order.</summary>
-    private static Atom? BestSharedAtom(List<PolyTerm> terms)
+    private static Atom? BestSharedAtom(List<PolyTerm> terms, IReadOnlyDictionary<Atom, int>? spread)
     {
         var counts = new Dictionary<Atom, int>();
         foreach (var t in terms)
@@ -85,13 +98,20 @@ public static class ScalarLowering
         var bestCount = 1;
         foreach (var (atom, count) in counts)
         {
-            if (count > bestCount || (count == bestCount && best is not null && atom.CompareTo(best) < 0))
+            if (count > bestCount || (count == bestCount && best is not null && IsPreferred(atom, best, spread)))
             {
                 best = atom;
                 bestCount = count;
             }
         }
         return bestCount >= 2 ? best : null;
+    }
+
+    /// <summary>On a tie, the atom fewer statements read, then the canonical order.</summary>
+    private static bool IsPreferred(Atom atom, Atom best, IReadOnlyDictionary<Atom, int>? spread)
+    {
+        var bySpread = spread is null ? 0 : spread.GetValueOrDefault(atom).CompareTo(spread.GetValueOrDefault(best));
+        return bySpread != 0 ? bySpread < 0 : atom.CompareTo(best) < 0;
     }
 
     private static Expr LowerTerm(PolyTerm t)

@@ -14,6 +14,7 @@ public class KernelAgreement_AllVariants
              "JuliaStep5", "RotorInterpolate", "SkewLinesClosestPoints", "NormalToVectors", "SphereThroughPoints", "ApplyTwistToPoint3D"],
             KernelCatalog.Names.Take(13));
         Assert.Contains("SquaredDistance", KernelCatalog.Names);
+        Assert.Contains("RotateAboutAxisThroughPoint3D", KernelCatalog.Names);
         Assert.Equal(KernelCatalog.Names.Count, KernelCatalog.Names.Distinct().Count());
     }
 

@@ -82,8 +82,11 @@ public static class PluckerTriangleSolver
         //GMac.Bind("v3", "PgaVector3D", c);
         //GMac.Bind("d1.1", "<d1>");
         //GMac.Bind("d2.1", "<d2>");
-        d1 = ray.d.x * (a.z * b.y - a.y * b.z) + ray.d.y * (a.x * b.z - a.z * b.x) + ray.d.z * (a.y * b.x - a.x * b.y);
-        d2 = ray.d.x * (c.y * b.z - c.z * b.y) + ray.d.y * (c.z * b.x - b.z * c.x) + ray.d.z * (b.y * c.x - c.y * b.x);
+        double tmp0 = b.x * ray.d.y - b.y * ray.d.x;
+        double tmp1 = b.z * ray.d.x - b.x * ray.d.z;
+        double tmp2 = b.z * ray.d.y - b.y * ray.d.z;
+        d1 = a.x * tmp2 - a.y * tmp1 - a.z * tmp0;
+        d2 = c.y * tmp1 + c.z * tmp0 - c.x * tmp2;
         #endregion
 
         if ((d1 < 0 && d2 > 0) || (d1 > 0 && d2 < 0))
@@ -109,10 +112,10 @@ public static class PluckerTriangleSolver
         //GMac.Bind("v2", "PgaVector3D", b);
         //GMac.Bind("v3", "PgaVector3D", c);
         //GMac.Bind("tn.1", "<tn>");
-        double tmp0 = a.x - b.x;
-        double tmp1 = a.y - b.y;
-        double tmp2 = a.z - b.z;
-        tn = -((c.x - a.x) * (tmp1 * a.z - tmp2 * a.y) + (c.y - a.y) * (tmp2 * a.x - tmp0 * a.z) + (c.z - a.z) * (tmp0 * a.y - tmp1 * a.x));
+        double t0 = a.x - b.x;
+        double t1 = a.y - b.y;
+        double t2 = a.z - b.z;
+        tn = -((c.x - a.x) * (t1 * a.z - t2 * a.y) + (c.y - a.y) * (t2 * a.x - t0 * a.z) + (c.z - a.z) * (t0 * a.y - t1 * a.x));
         #endregion
 
         return Finish(d1, d2, d3, tn, tMax, out beta, out gamma);

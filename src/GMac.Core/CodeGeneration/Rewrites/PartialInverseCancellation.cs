@@ -1,0 +1,52 @@
+using GMac.Core.Symbolic;
+
+namespace GMac.Core.CodeGeneration.Rewrites;
+
+/// <summary>
+/// Norm cancellation with a remainder: in B·(1/s) + R, the part of B that is a polynomial multiple
+/// of s leaves the fraction, B = Q·s + B' gives Q + B'·(1/s) + R. A rejection or a sandwich by
+/// an unnormalized vector divides by its squared norm |a|², and the products it divides often
+/// carry |a|² in some terms only (ω (p·a) a + γ |a|² (a × p)): exact cancellation needs all of
+/// B, this takes what it can. Kept only when the expression gets fewer terms.
+/// </summary>
+public static class PartialInverseCancellation
+{
+    /// <summary>Larger cofactors and divisors are left alone: division costs grow with the product of their sizes.</summary>
+    private const int MaxCofactorTerms = 48;
+    private const int MaxDivisorTerms = 8;
+
+    public static Scalar Apply(Scalar e)
+    {
+        foreach (var atom in e.Atoms().Where(a => a.Kind == AtomKind.Inverse).Order().ToArray())
+        {
+            var (cofactor, rest) = Split(e, atom);
+            var s = atom.Arguments[0];
+            if (cofactor.Terms.Count < 2 || cofactor.Terms.Count > MaxCofactorTerms || s.Terms.Count > MaxDivisorTerms) continue;
+            Scalar? best = null;
+            foreach (var first in PolynomialRemainder.Candidates(s))
+            {
+                if (!PolynomialRemainder.TryDivide(cofactor, s, first, out var q, out var r) || Scalar.IsZero(q)) continue;
+                var candidate = q + r * atom.AsScalar() + rest;
+                if (candidate.Terms.Count < (best ?? e).Terms.Count) best = candidate;
+            }
+            if (best is not null) e = best;
+        }
+        return e;
+    }
+
+    /// <summary>e = cofactor·atom + rest, where rest has no positive power of the atom.</summary>
+    private static (Scalar Cofactor, Scalar Remaining) Split(Scalar e, Atom atom)
+    {
+        var cofactor = new List<Term>();
+        var rest = new List<Term>();
+        foreach (var t in e.Terms)
+        {
+            var power = t.Monomial.Factors.FirstOrDefault(f => ReferenceEquals(f.Atom, atom)).Power;
+            if (power > 0)
+                cofactor.Add(new Term(t.Coefficient, Monomial.Create(t.Monomial.Factors.Where(f => !ReferenceEquals(f.Atom, atom))
+                    .Concat(power > 1 ? [new Factor(atom, power - 1)] : []))));
+            else rest.Add(t);
+        }
+        return (Scalar.FromTerms(cofactor), Scalar.FromTerms(rest));
+    }
+}

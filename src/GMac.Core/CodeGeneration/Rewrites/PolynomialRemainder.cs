@@ -1,0 +1,92 @@
+using GMac.Core.Numerics;
+using GMac.Core.Symbolic;
+
+namespace GMac.Core.CodeGeneration.Rewrites;
+
+/// <summary>
+/// Multivariate division with remainder, b = q·s + r, in a lexicographic order whose first atom
+/// is chosen by the caller (every atom, sin and inverses included, acts as a variable). No term
+/// of r is divisible by the leading term of s, so r is the part of b that s cannot absorb.
+/// </summary>
+internal static class PolynomialRemainder
+{
+    private const int MaxSteps = 4_000;
+
+    /// <returns>false when the division would take too many steps.</returns>
+    public static bool TryDivide(Scalar b, Scalar s, Atom first, out Scalar quotient, out Scalar remainder)
+    {
+        quotient = Scalar.Zero;
+        remainder = b;
+        if (Scalar.IsZero(s) || Scalar.IsZero(b)) return false;
+        var lead = Leading(s, first);
+        var rest = b;
+        var q = new List<Term>();
+        var r = new List<Term>();
+        for (var step = 0; !Scalar.IsZero(rest); step++)
+        {
+            if (step == MaxSteps) return false;
+            var top = Leading(rest, first);
+            var factor = Divide(top.Monomial, lead.Monomial);
+            if (factor is null)
+            {
+                r.Add(top);
+                rest -= Scalar.FromTerm(top.Coefficient, top.Monomial);
+                continue;
+            }
+            var t = new Term(top.Coefficient / lead.Coefficient, factor);
+            q.Add(t);
+            rest -= Scalar.FromTerm(t.Coefficient, t.Monomial) * s;
+        }
+        quotient = Scalar.FromTerms(q);
+        remainder = Scalar.FromTerms(r);
+        return true;
+    }
+
+    private static Term Leading(Scalar s, Atom first)
+    {
+        var best = s.Terms[0];
+        for (var i = 1; i < s.Terms.Count; i++)
+            if (Compare(s.Terms[i].Monomial, best.Monomial, first) > 0) best = s.Terms[i];
+        return best;
+    }
+
+    private static int Power(Monomial m, Atom atom)
+    {
+        foreach (var f in m.Factors)
+            if (ReferenceEquals(f.Atom, atom)) return f.Power;
+        return 0;
+    }
+
+    /// <summary>The power of <paramref name="first"/> decides, then the atoms in descending canonical order.</summary>
+    private static int Compare(Monomial a, Monomial b, Atom first)
+    {
+        var c = Power(a, first).CompareTo(Power(b, first));
+        if (c != 0) return c;
+        var atoms = a.Factors.Select(f => f.Atom).Union(b.Factors.Select(f => f.Atom)).OrderByDescending(x => x);
+        foreach (var atom in atoms)
+        {
+            c = Power(a, atom).CompareTo(Power(b, atom));
+            if (c != 0) return c;
+        }
+        return 0;
+    }
+
+    /// <summary>m / d when d's powers do not exceed m's (only positive powers divide).</summary>
+    private static Monomial? Divide(Monomial m, Monomial d)
+    {
+        var powers = m.Factors.ToDictionary(f => f.Atom, f => f.Power);
+        foreach (var f in d.Factors)
+        {
+            var have = powers.GetValueOrDefault(f.Atom);
+            if (f.Power <= 0 || have < f.Power) return null;
+            powers[f.Atom] = have - f.Power;
+        }
+        return Monomial.Create(powers.Where(kv => kv.Value != 0).Select(kv => new Factor(kv.Key, kv.Value)));
+    }
+
+    /// <summary>Atoms that may lead the order: those of s with a positive power.</summary>
+    public static IEnumerable<Atom> Candidates(Scalar s) =>
+        s.Terms.SelectMany(t => t.Monomial.Factors).Where(f => f.Power > 0).Select(f => f.Atom).Distinct().Order();
+
+    public static Rational LeadCoefficient(Scalar s) => s.Terms[0].Coefficient;
+}
