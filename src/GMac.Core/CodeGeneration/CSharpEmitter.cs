@@ -40,8 +40,11 @@ public static partial class CSharpEmitter
         if (options.IncludeStatistics)
             sb.Append(options.Indent).Append("// GMac: ").Append(block.Statistics()).Append(options.NewLine);
         var declared = new HashSet<string>(StringComparer.Ordinal);
+        var sinCos = new SinCosPairs(block);
         foreach (var s in block.Statements)
         {
+            if (sinCos.IsDropped(s))
+                continue;
             sb.Append(options.Indent);
             switch (s)
             {
@@ -49,6 +52,13 @@ public static partial class CSharpEmitter
                     var target = block.OutputTargets[o.Target].Trim();
                     if (options.DeclareOutputs && declared.Add(target)) sb.Append(options.ScalarType).Append(' ');
                     sb.Append(target).Append(" = ").Append(Print(o.Value)).Append(';');
+                    break;
+                case AssignmentStatement t when sinCos.TryGetPair(t, out var pair):
+                    var (sine, cosine) = (tempName[pair.Sine], tempName[pair.Cosine]);
+                    declared.Add(sine);
+                    declared.Add(cosine);
+                    sb.Append("var (").Append(sine).Append(", ").Append(cosine).Append(") = ")
+                        .Append(single ? "MathF" : "Math").Append(".SinCos(").Append(Print(pair.Argument)).Append(");");
                     break;
                 case AssignmentStatement t:
                     var name = tempName[t.Target];
