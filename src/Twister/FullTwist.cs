@@ -114,8 +114,7 @@ public sealed class FullTwist : Twist
         //GMac.Bind("y", "Vector3D", y);
         //GMac.Bind("yu", "Vector3D", yu);
         //GMac.Bind("yv", "Vector3D", yv);
-        double tmp0 = Math.Cos(angle);
-        double tmp1 = Math.Sin(angle);
+        var (tmp1, tmp0) = Math.SinCos(angle);
         double tmp2 = tmp0 - 1.0;
         double tmp3 = x.z - origin.z;
         double tmp4 = x.y - origin.y;
@@ -180,8 +179,7 @@ public sealed class FullTwist : Twist
         //GMac.Bind("du", "Vector3D", xu);
         //GMac.Bind("y", "Vector3D", y);
         //GMac.Bind("yu", "Vector3D", yu);
-        double tmp0 = Math.Cos(angle);
-        double tmp1 = Math.Sin(angle);
+        var (tmp1, tmp0) = Math.SinCos(angle);
         double tmp2 = x.z - origin.z;
         double tmp3 = x.y - origin.y;
         double tmp4 = x.x - origin.x;

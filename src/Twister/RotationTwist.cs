@@ -94,8 +94,7 @@ public sealed class RotationTwist : Twist
         double tmp0 = p.y - origin.y;
         double tmp1 = p.z - origin.z;
         y.x = p.x;
-        double tmp2 = Math.Sin(angle);
-        double tmp3 = Math.Cos(angle);
+        var (tmp2, tmp3) = Math.SinCos(angle);
         y.y = tmp0 * tmp3 + origin.y - tmp1 * tmp2;
         y.z = tmp0 * tmp2 + tmp1 * tmp3 + origin.z;
         #endregion
@@ -117,8 +116,7 @@ public sealed class RotationTwist : Twist
         //GMac.Bind("y", "Vector3D", y);
         double tmp0 = p.x - origin.x;
         double tmp1 = p.z - origin.z;
-        double tmp2 = Math.Sin(angle);
-        double tmp3 = Math.Cos(angle);
+        var (tmp2, tmp3) = Math.SinCos(angle);
         y.x = tmp0 * tmp3 + tmp1 * tmp2 + origin.x;
         y.y = p.y;
         y.z = tmp1 * tmp3 + origin.z - tmp0 * tmp2;
@@ -141,8 +139,7 @@ public sealed class RotationTwist : Twist
         //GMac.Bind("y", "Vector3D", y);
         double tmp0 = p.x - origin.x;
         double tmp1 = p.y - origin.y;
-        double tmp2 = Math.Sin(angle);
-        double tmp3 = Math.Cos(angle);
+        var (tmp2, tmp3) = Math.SinCos(angle);
         y.x = tmp0 * tmp3 + origin.x - tmp1 * tmp2;
         y.y = tmp0 * tmp2 + tmp1 * tmp3 + origin.y;
         y.z = p.z;
@@ -188,8 +185,7 @@ public sealed class RotationTwist : Twist
         //GMac.Bind("y", "Vector3D", y);
         //GMac.Bind("yu", "Vector3D", yu);
         //GMac.Bind("yv", "Vector3D", yv);
-        double tmp0 = Math.Cos(angle);
-        double tmp1 = Math.Sin(angle);
+        var (tmp1, tmp0) = Math.SinCos(angle);
         double tmp2 = tmp0 - 1.0;
         double tmp3 = x.z - origin.z;
         double tmp4 = x.y - origin.y;
@@ -248,8 +244,7 @@ public sealed class RotationTwist : Twist
         //GMac.Bind("du", "Vector3D", xu);
         //GMac.Bind("y", "Vector3D", y);
         //GMac.Bind("yu", "Vector3D", yu);
-        double tmp0 = Math.Cos(angle);
-        double tmp1 = Math.Sin(angle);
+        var (tmp1, tmp0) = Math.SinCos(angle);
         double tmp2 = x.z - origin.z;
         double tmp3 = x.y - origin.y;
         double tmp4 = origin.x - x.x;
