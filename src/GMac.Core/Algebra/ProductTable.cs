@@ -24,6 +24,7 @@ internal sealed class ProductTable<T> where T : INumberBase<T>
     private const int FlatLimit = 64;
 
     private Flat? _flat;
+    private int _built; // entries of _dense filled so far
 
     /// <summary>
     /// All entries in compressed rows: the terms of blade pair (a, b) are at Start[p] .. Start[p + 1] − 1
@@ -36,11 +37,16 @@ internal sealed class ProductTable<T> where T : INumberBase<T>
         public readonly T[] Coefficients = coefficients;
     }
 
-    /// <summary>The flat form for frames of at most 64 blades, built on first use; null above.</summary>
+    /// <summary>
+    /// The flat form for frames of at most 64 blades, once products have built every entry; null
+    /// until then. Symbolic code generation in a fresh frame needs only the pairs its operands
+    /// meet, so the table is never completed just to be flattened.
+    /// </summary>
     public Flat? Flattened()
     {
         if (_flat is not null || _frame.BladeCount > FlatLimit) return _flat;
         var n = _frame.BladeCount;
+        if (Volatile.Read(ref _built) < n * n) return null;
         var start = new int[n * n + 1];
         var blades = new List<int>();
         var coefficients = new List<T>();
@@ -89,7 +95,12 @@ internal sealed class ProductTable<T> where T : INumberBase<T>
         if (_dense is not null)
         {
             var index = a * _frame.BladeCount + b;
-            return _dense[index] ??= Build(a, b); // a benign race: both builders produce equal entries
+            if (_dense[index] is { } known) return known;
+            var entry = Build(a, b);
+            // A benign race: both builders produce equal entries; only the first one stored is counted.
+            if (Interlocked.CompareExchange(ref _dense[index], entry, null) is { } other) return other;
+            Interlocked.Increment(ref _built);
+            return entry;
         }
         return _sparse!.GetOrAdd(((long)a << 32) | (uint)b, key => Build((int)(key >> 32), (int)key));
     }
