@@ -10,7 +10,7 @@ namespace GMac.Benchmarks.Generation;
 /// fresh simplification cache over an empty folder; warm means the same generator asked again. One
 /// untimed pass over the library comes first so that JIT compilation is not charged to the first macro.
 /// </summary>
-public sealed class GenerationTimer(string dslDirectory, int warmRepeats)
+public sealed class GenerationTimer(string dslDirectory, int warmRepeats, IReadOnlyCollection<string>? only = null)
 {
     public GenerationTimings Measure()
     {
@@ -27,7 +27,7 @@ public sealed class GenerationTimer(string dslDirectory, int warmRepeats)
             throw new InvalidOperationException($"the DSL folder '{dslDirectory}' has errors: {project.Diagnostics.First(d => d.IsError)}");
 
         var macros = new List<MacroGenerationTiming>();
-        foreach (var name in new MacroCodeGenerator(project).MacroNames.ToArray())
+        foreach (var name in new MacroCodeGenerator(project).MacroNames.Where(n => only is null || only.Contains(n)).ToArray())
         {
             var (generator, directory) = Fresh();
             var bindings = generator.DefaultBindings(name);
@@ -48,7 +48,7 @@ public sealed class GenerationTimer(string dslDirectory, int warmRepeats)
         }
 
         var (library, libraryDir) = Fresh();
-        var names = library.MacroNames.ToArray();
+        var names = library.MacroNames.Where(n => only is null || only.Contains(n)).ToArray();
         var libraryCold = Stopwatch.StartNew();
         foreach (var name in names) library.Generate(name, library.DefaultBindings(name));
         libraryCold.Stop();

@@ -104,10 +104,22 @@ public sealed class Frame
         return true;
     }
 
-    public BasisBlade ParseBlade(string text, out int sign) =>
-        TryParseBlade(text, out var blade, out sign)
-            ? blade
-            : throw new AlgebraException(Name, $"'{text}' does not name a basis blade (basis vectors: {string.Join(", ", _names)}).");
+    public BasisBlade ParseBlade(string text, out int sign)
+    {
+        // Code that reads coefficients by name (m["e1^e2"]) asks for the same few names again and again.
+        if (_parsedBlades.TryGetValue(text, out var known))
+        {
+            sign = known.Sign;
+            return known.Blade;
+        }
+        if (!TryParseBlade(text, out var blade, out sign))
+            throw new AlgebraException(Name, $"'{text}' does not name a basis blade (basis vectors: {string.Join(", ", _names)}).");
+        if (_parsedBlades.Count < MaxParsedBlades) _parsedBlades.TryAdd(text, (blade, sign));
+        return blade;
+    }
+
+    private const int MaxParsedBlades = 4096;
+    private readonly System.Collections.Concurrent.ConcurrentDictionary<string, (BasisBlade Blade, int Sign)> _parsedBlades = new(StringComparer.Ordinal);
 
     /// <summary>All blades of grade k, in ascending id order.</summary>
     public IEnumerable<BasisBlade> BladesOfGrade(int k)

@@ -11,16 +11,35 @@ public sealed partial class Multivector<T>
     /// </summary>
     public const long MaxProductPairs = 1L << 22;
 
-    /// <summary>Any bilinear product of Table 3-2, term by term through the frame's product table.</summary>
+    /// <summary>Any bilinear product of Table 3-2, term by term through the frame's product tables.</summary>
     public Multivector<T> Product(ProductKind kind, Multivector<T> other)
     {
         RequireSameFrame(this, other, "multiply");
         if (IsZero || other.IsZero) return Zero(Frame);
         if (Frame.SignatureProducts is { } signature && kind == ProductKind.Scalar) return ScalarProduct(signature, other);
         CheckSize(other);
-        if (Frame.SignatureProducts is { } signs) return Product(signs, kind, other);
-        var table = ProductTable<T>.For(Frame, kind);
-        var acc = new Accumulator(Frame);
+        var acc = Accumulator.Rent(Frame);
+        try
+        {
+            if (Frame.SignatureProducts is not { } signs)
+            {
+                var table = ProductTable<T>.For(Frame, kind);
+                if (table.Flattened() is { } flat) AddProducts(flat, other, acc);
+                else AddProducts(table, other, acc);
+            }
+            else if (signs.SignTable(kind) is { } table) AddProducts(table, other, acc);
+            else AddProducts(signs, kind, other, acc);
+            return acc.ToMultivector(Frame);
+        }
+        finally
+        {
+            acc.Return();
+        }
+    }
+
+    /// <summary>A non-orthogonal frame: each pair of blades gives a list of blades with exact coefficients.</summary>
+    private void AddProducts(ProductTable<T> table, Multivector<T> other, Accumulator acc)
+    {
         var bIds = other._ids;
         var bCs = other._coefficients;
         for (var i = 0; i < _ids.Length; i++)
@@ -30,19 +49,61 @@ public sealed partial class Multivector<T>
             for (var j = 0; j < bIds.Length; j++)
             {
                 var entry = table.Get(a, bIds[j]);
-                if (entry.Blades.Length == 0) continue;
+                var blades = entry.Blades;
+                if (blades.Length == 0) continue;
                 var ab = ca * bCs[j];
-                for (var k = 0; k < entry.Blades.Length; k++)
-                    acc.Add(entry.Blades[k], entry.IsOne[k] ? ab : entry.Coefficients[k] * ab);
+                for (var k = 0; k < blades.Length; k++)
+                    acc.Add(blades[k], entry.IsOne[k] ? ab : entry.Coefficients[k] * ab);
             }
         }
-        return acc.ToMultivector();
     }
 
-    /// <summary>The same product in an orthonormal frame: each pair of blades gives at most one signed blade.</summary>
-    private Multivector<T> Product(SignatureProducts signature, ProductKind kind, Multivector<T> other)
+    /// <summary>A small non-orthogonal frame: the terms of each pair of blades from the flat table.</summary>
+    private void AddProducts(ProductTable<T>.Flat flat, Multivector<T> other, Accumulator acc)
     {
-        var acc = new Accumulator(Frame);
+        var (start, blades, coefficients) = (flat.Start, flat.Blades, flat.Coefficients);
+        var bIds = other._ids;
+        var bCs = other._coefficients;
+        var n = Frame.BladeCount;
+        for (var i = 0; i < _ids.Length; i++)
+        {
+            var row = _ids[i] * n;
+            var ca = _coefficients[i];
+            for (var j = 0; j < bIds.Length; j++)
+            {
+                var p = row + bIds[j];
+                var (first, end) = (start[p], start[p + 1]);
+                if (first == end) continue;
+                var ab = ca * bCs[j];
+                for (var k = first; k < end; k++) acc.Add(blades[k], coefficients[k] * ab);
+            }
+        }
+    }
+
+    /// <summary>An orthogonal frame of at most 8 dimensions: one signed blade a XOR b per pair, its sign from a table.</summary>
+    private void AddProducts(sbyte[] signTable, Multivector<T> other, Accumulator acc)
+    {
+        var bIds = other._ids;
+        var bCs = other._coefficients;
+        var n = Frame.BladeCount;
+        for (var i = 0; i < _ids.Length; i++)
+        {
+            var a = _ids[i];
+            var ca = _coefficients[i];
+            var row = a * n;
+            for (var j = 0; j < bIds.Length; j++)
+            {
+                var sign = signTable[row + bIds[j]];
+                if (sign == 0) continue;
+                var ab = ca * bCs[j];
+                acc.Add(a ^ bIds[j], sign > 0 ? ab : -ab);
+            }
+        }
+    }
+
+    /// <summary>A larger orthogonal frame: the sign of each pair from a few bit operations.</summary>
+    private void AddProducts(SignatureProducts signature, ProductKind kind, Multivector<T> other, Accumulator acc)
+    {
         var bIds = other._ids;
         var bCs = other._coefficients;
         for (var i = 0; i < _ids.Length; i++)
@@ -57,7 +118,6 @@ public sealed partial class Multivector<T>
                 acc.Add(blade, sign > 0 ? ab : -ab);
             }
         }
-        return acc.ToMultivector();
     }
 
     /// <summary>⟨AB⟩₀ in an orthonormal frame: only equal blades meet, so one merge of the sorted terms.</summary>

@@ -6,40 +6,67 @@ public sealed partial class Multivector<T>
 {
     // ---- involutions and grades ------------------------------------------------------------------
 
-    private Multivector<T> SignByGrade(Func<int, int> sign) =>
-        MapSigned(id => sign(BitOperations.PopCount((uint)id)));
-
-    private Multivector<T> MapSigned(Func<int, int> signOfBlade)
+    /// <summary>Negates the grades whose bit is set in <paramref name="negatedGrades"/>.</summary>
+    private Multivector<T> SignByGrade(int negatedGrades)
     {
         var cs = new T[_coefficients.Length];
         for (var i = 0; i < cs.Length; i++)
-            cs[i] = signOfBlade(_ids[i]) > 0 ? _coefficients[i] : -_coefficients[i];
+            cs[i] = (negatedGrades & (1 << BitOperations.PopCount((uint)_ids[i]))) == 0 ? _coefficients[i] : -_coefficients[i];
         return new Multivector<T>(Frame, _ids, cs);
     }
 
+    /// <summary>The grades 0..32 whose sign is −1, as a bit mask.</summary>
+    private static int NegatedGrades(Func<int, int> sign)
+    {
+        var mask = 0;
+        for (var k = 0; k < 32; k++)
+            if (sign(k) < 0) mask |= 1 << k;
+        return mask;
+    }
+
+    private static readonly int ReverseNegated = NegatedGrades(BasisBlade.ReverseSign);
+    private static readonly int GradeInvolutionNegated = NegatedGrades(BasisBlade.GradeInvolutionSign);
+    private static readonly int CliffordConjugateNegated = NegatedGrades(BasisBlade.CliffordConjugateSign);
+
     /// <summary>Ã: reverses the order of vector factors, (−1)^(k(k−1)/2) on grade k.</summary>
-    public Multivector<T> Reverse() => SignByGrade(BasisBlade.ReverseSign);
+    public Multivector<T> Reverse() => SignByGrade(ReverseNegated);
 
     /// <summary>Â: (−1)^k on grade k.</summary>
-    public Multivector<T> GradeInvolution() => SignByGrade(BasisBlade.GradeInvolutionSign);
+    public Multivector<T> GradeInvolution() => SignByGrade(GradeInvolutionNegated);
 
     /// <summary>A†: (−1)^(k(k+1)/2) on grade k.</summary>
-    public Multivector<T> CliffordConjugate() => SignByGrade(BasisBlade.CliffordConjugateSign);
+    public Multivector<T> CliffordConjugate() => SignByGrade(CliffordConjugateNegated);
 
     /// <summary>⟨A⟩ₖ, the grade-k part.</summary>
-    public Multivector<T> Grade(int k) => SelectGrades(g => g == k);
+    public Multivector<T> Grade(int k)
+    {
+        var count = 0;
+        foreach (var id in _ids)
+            if (BitOperations.PopCount((uint)id) == k) count++;
+        if (count == _ids.Length) return this;
+        var ids = new int[count];
+        var cs = new T[count];
+        for (int i = 0, j = 0; i < _ids.Length; i++)
+        {
+            if (BitOperations.PopCount((uint)_ids[i]) != k) continue;
+            ids[j] = _ids[i];
+            cs[j++] = _coefficients[i];
+        }
+        return new Multivector<T>(Frame, ids, cs);
+    }
 
     public Multivector<T> SelectGrades(Func<int, bool> keep)
     {
-        var ids = new List<int>();
-        var cs = new List<T>();
+        var ids = new int[_ids.Length];
+        var cs = new T[_ids.Length];
+        var k = 0;
         for (var i = 0; i < _ids.Length; i++)
         {
             if (!keep(BitOperations.PopCount((uint)_ids[i]))) continue;
-            ids.Add(_ids[i]);
-            cs.Add(_coefficients[i]);
+            ids[k] = _ids[i];
+            cs[k++] = _coefficients[i];
         }
-        return new Multivector<T>(Frame, ids.ToArray(), cs.ToArray());
+        return Trimmed(Frame, ids, cs, k);
     }
 
     // ---- norms ---------------------------------------------------------------------------------

@@ -7,7 +7,10 @@ namespace GMac.Core.Algebra;
 /// <summary>
 /// An immutable multivector of a frame, generic over its scalar type: <c>double</c> for numbers,
 /// the symbolic <c>Scalar</c> for code generation. Terms are kept sparse, sorted by blade id,
-/// with exact zeros dropped. Every operation is written once for both domains.
+/// with exact zeros dropped: a conformal point has 5 of 32 coefficients, and products loop over
+/// the terms present only. Products add into a dense per-thread buffer indexed by blade and read
+/// signs from per-frame tables (see <see cref="Accumulator"/> and the product partial), so an
+/// operation allocates its result and nothing else. Every operation is written once for both domains.
 /// </summary>
 public sealed partial class Multivector<T>
     where T : INumberBase<T>, IRootFunctions<T>, ITrigonometricFunctions<T>, IHyperbolicFunctions<T>
@@ -50,19 +53,37 @@ public sealed partial class Multivector<T>
     {
         if (coefficients.Length != frame.Dimension)
             throw new AlgebraException(frame.Name, $"a vector needs {frame.Dimension} coefficients, not {coefficients.Length}.");
-        return FromTerms(frame, coefficients.Select((c, i) => (new BasisBlade(1 << i), c)));
+        var count = 0;
+        foreach (var c in coefficients)
+            if (!T.IsZero(c)) count++;
+        var ids = new int[count];
+        var cs = new T[count];
+        for (int i = 0, k = 0; i < coefficients.Length; i++)
+        {
+            if (T.IsZero(coefficients[i])) continue;
+            ids[k] = 1 << i;
+            cs[k++] = coefficients[i];
+        }
+        return new Multivector<T>(frame, ids, cs);
     }
 
     /// <summary>A multivector from (blade, coefficient) pairs; repeated blades are summed.</summary>
     public static Multivector<T> FromTerms(Frame frame, IEnumerable<(BasisBlade Blade, T Coefficient)> terms)
     {
-        var acc = new Accumulator(frame);
-        foreach (var (blade, c) in terms)
+        var acc = Accumulator.Rent(frame);
+        try
         {
-            frame.CheckBlade(blade);
-            acc.Add(blade.Id, c);
+            foreach (var (blade, c) in terms)
+            {
+                frame.CheckBlade(blade);
+                acc.Add(blade.Id, c);
+            }
+            return acc.ToMultivector(frame);
         }
-        return acc.ToMultivector();
+        finally
+        {
+            acc.Return();
+        }
     }
 
     // ---- reading ---------------------------------------------------------------------------
@@ -101,7 +122,17 @@ public sealed partial class Multivector<T>
     public T ScalarPart => this[BasisBlade.Scalar];
 
     /// <summary>The distinct grades present, ascending.</summary>
-    public IReadOnlyList<int> Grades => _ids.Select(id => BitOperations.PopCount((uint)id)).Distinct().Order().ToArray();
+    public IReadOnlyList<int> Grades
+    {
+        get
+        {
+            var mask = 0;
+            foreach (var id in _ids) mask |= 1 << BitOperations.PopCount((uint)id);
+            var grades = new int[BitOperations.PopCount((uint)mask)];
+            for (var k = 0; mask != 0; mask &= mask - 1) grades[k++] = BitOperations.TrailingZeroCount(mask);
+            return grades;
+        }
+    }
 
     public bool IsScalar => _ids.Length == 0 || (_ids.Length == 1 && _ids[0] == 0);
 
@@ -117,49 +148,76 @@ public sealed partial class Multivector<T>
     /// <summary>The geometric product.</summary>
     public static Multivector<T> operator *(Multivector<T> a, Multivector<T> b) => a.Gp(b);
 
-    public Multivector<T> Scale(T s) => T.IsZero(s) ? Zero(Frame) : MapCoefficients(c => s * c);
+    public Multivector<T> Scale(T s)
+    {
+        if (T.IsZero(s)) return Zero(Frame);
+        var ids = new int[_ids.Length];
+        var cs = new T[_ids.Length];
+        var k = 0;
+        for (var i = 0; i < _ids.Length; i++)
+        {
+            var c = s * _coefficients[i];
+            if (T.IsZero(c)) continue; // a product of non-zero doubles can underflow to zero
+            ids[k] = _ids[i];
+            cs[k++] = c;
+        }
+        return Trimmed(Frame, ids, cs, k);
+    }
 
     public Multivector<T> Add(T scalar) => this + FromScalar(Frame, scalar);
 
     private static Multivector<T> Combine(Multivector<T> a, Multivector<T> b, bool subtract)
     {
         RequireSameFrame(a, b, subtract ? "subtract" : "add");
-        var ids = new List<int>(a._ids.Length + b._ids.Length);
-        var cs = new List<T>(a._ids.Length + b._ids.Length);
-        int i = 0, j = 0;
-        while (i < a._ids.Length || j < b._ids.Length)
+        var (x, y) = (a._ids, b._ids);
+        var ids = new int[x.Length + y.Length];
+        var cs = new T[ids.Length];
+        int i = 0, j = 0, k = 0;
+        while (i < x.Length || j < y.Length)
         {
-            if (j >= b._ids.Length || (i < a._ids.Length && a._ids[i] < b._ids[j]))
+            if (j >= y.Length || (i < x.Length && x[i] < y[j]))
             {
-                ids.Add(a._ids[i]); cs.Add(a._coefficients[i]); i++;
+                ids[k] = x[i]; cs[k++] = a._coefficients[i++];
             }
-            else if (i >= a._ids.Length || b._ids[j] < a._ids[i])
+            else if (i >= x.Length || y[j] < x[i])
             {
-                ids.Add(b._ids[j]); cs.Add(subtract ? -b._coefficients[j] : b._coefficients[j]); j++;
+                ids[k] = y[j]; cs[k++] = subtract ? -b._coefficients[j] : b._coefficients[j]; j++;
             }
             else
             {
                 var c = subtract ? a._coefficients[i] - b._coefficients[j] : a._coefficients[i] + b._coefficients[j];
-                if (!T.IsZero(c)) { ids.Add(a._ids[i]); cs.Add(c); }
+                if (!T.IsZero(c)) { ids[k] = x[i]; cs[k++] = c; }
                 i++; j++;
             }
         }
-        return new Multivector<T>(a.Frame, ids.ToArray(), cs.ToArray());
+        return Trimmed(a.Frame, ids, cs, k);
+    }
+
+    /// <summary>A multivector of the first <paramref name="count"/> terms, copied only when the arrays are longer.</summary>
+    private static Multivector<T> Trimmed(Frame frame, int[] ids, T[] cs, int count)
+    {
+        if (count != ids.Length)
+        {
+            Array.Resize(ref ids, count);
+            Array.Resize(ref cs, count);
+        }
+        return new Multivector<T>(frame, ids, cs);
     }
 
     /// <summary>Applies f to every coefficient, dropping those that become zero.</summary>
     public Multivector<T> MapCoefficients(Func<T, T> f)
     {
-        var ids = new List<int>(_ids.Length);
-        var cs = new List<T>(_ids.Length);
+        var ids = new int[_ids.Length];
+        var cs = new T[_ids.Length];
+        var k = 0;
         for (var i = 0; i < _ids.Length; i++)
         {
             var c = f(_coefficients[i]);
             if (T.IsZero(c)) continue;
-            ids.Add(_ids[i]);
-            cs.Add(c);
+            ids[k] = _ids[i];
+            cs[k++] = c;
         }
-        return new Multivector<T>(Frame, ids.ToArray(), cs.ToArray());
+        return Trimmed(Frame, ids, cs, k);
     }
 
     /// <summary>Applies f(blade, coefficient) to every term.</summary>
@@ -168,78 +226,26 @@ public sealed partial class Multivector<T>
     /// <summary>The same coefficients carried to another scalar type (e.g. symbolic to numeric).</summary>
     public Multivector<TOther> Convert<TOther>(Func<T, TOther> convert)
         where TOther : INumberBase<TOther>, IRootFunctions<TOther>, ITrigonometricFunctions<TOther>, IHyperbolicFunctions<TOther> =>
-        Multivector<TOther>.FromTerms(Frame, Terms.Select(t => (t.Blade, convert(t.Coefficient))));
+        Multivector<TOther>.FromSortedTerms(Frame, _ids, Array.ConvertAll(_coefficients, c => convert(c)));
+
+    /// <summary>Terms already sorted by distinct blade ids; zero coefficients are dropped.</summary>
+    internal static Multivector<T> FromSortedTerms(Frame frame, int[] ids, T[] coefficients)
+    {
+        var keptIds = new int[ids.Length];
+        var k = 0;
+        for (var i = 0; i < ids.Length; i++)
+        {
+            if (T.IsZero(coefficients[i])) continue;
+            keptIds[k] = ids[i];
+            coefficients[k++] = coefficients[i];
+        }
+        return Trimmed(frame, keptIds, coefficients, k);
+    }
 
     internal static void RequireSameFrame(Multivector<T> a, Multivector<T> b, string operation)
     {
         if (!ReferenceEquals(a.Frame, b.Frame))
             throw new AlgebraException(a.Frame.Name, $"cannot {operation} a multivector of frame '{a.Frame.Name}' and one of frame '{b.Frame.Name}'; map one into the other's frame first.");
-    }
-
-    // ---- accumulation buffer for products -----------------------------------------------------
-
-    /// <summary>Collects terms by blade: a dense array for frames up to 12 dimensions, a dictionary above.</summary>
-    private struct Accumulator
-    {
-        private readonly Frame _frame;
-        private readonly T[]? _dense;
-        private readonly bool[]? _used;
-        private readonly Dictionary<int, T>? _sparse;
-
-        public Accumulator(Frame frame)
-        {
-            _frame = frame;
-            if (frame.BladeCount <= 4096)
-            {
-                _dense = new T[frame.BladeCount];
-                _used = new bool[frame.BladeCount];
-                _sparse = null;
-            }
-            else
-            {
-                _dense = null;
-                _used = null;
-                _sparse = new Dictionary<int, T>();
-            }
-        }
-
-        public void Add(int id, T value)
-        {
-            if (_dense is not null)
-            {
-                if (_used![id]) _dense[id] += value;
-                else { _dense[id] = value; _used[id] = true; }
-            }
-            else
-            {
-                _sparse![id] = _sparse.TryGetValue(id, out var old) ? old + value : value;
-            }
-        }
-
-        public Multivector<T> ToMultivector()
-        {
-            var ids = new List<int>();
-            var cs = new List<T>();
-            if (_dense is not null)
-            {
-                for (var id = 0; id < _dense.Length; id++)
-                {
-                    if (!_used![id] || T.IsZero(_dense[id])) continue;
-                    ids.Add(id);
-                    cs.Add(_dense[id]);
-                }
-            }
-            else
-            {
-                foreach (var kv in _sparse!.OrderBy(kv => kv.Key))
-                {
-                    if (T.IsZero(kv.Value)) continue;
-                    ids.Add(kv.Key);
-                    cs.Add(kv.Value);
-                }
-            }
-            return new Multivector<T>(_frame, ids.ToArray(), cs.ToArray());
-        }
     }
 
     // ---- printing ------------------------------------------------------------------------------

@@ -20,6 +20,48 @@ internal sealed class ProductTable<T> where T : INumberBase<T>
     private readonly Entry?[]? _dense;
     private readonly ConcurrentDictionary<long, Entry>? _sparse;
 
+    /// <summary>Frames up to this many blades (6 dimensions) also get every entry in three flat arrays.</summary>
+    private const int FlatLimit = 64;
+
+    private Flat? _flat;
+    private int _built; // entries of _dense filled so far
+
+    /// <summary>
+    /// All entries in compressed rows: the terms of blade pair (a, b) are at Start[p] .. Start[p + 1] − 1
+    /// of Blades and Coefficients, with p = a · bladeCount + b. One load per pair instead of an entry object.
+    /// </summary>
+    internal sealed class Flat(int[] start, int[] blades, T[] coefficients)
+    {
+        public readonly int[] Start = start;
+        public readonly int[] Blades = blades;
+        public readonly T[] Coefficients = coefficients;
+    }
+
+    /// <summary>
+    /// The flat form for frames of at most 64 blades, once products have built every entry; null
+    /// until then. Symbolic code generation in a fresh frame needs only the pairs its operands
+    /// meet, so the table is never completed just to be flattened.
+    /// </summary>
+    public Flat? Flattened()
+    {
+        if (_flat is not null || _frame.BladeCount > FlatLimit) return _flat;
+        var n = _frame.BladeCount;
+        if (Volatile.Read(ref _built) < n * n) return null;
+        var start = new int[n * n + 1];
+        var blades = new List<int>();
+        var coefficients = new List<T>();
+        for (var a = 0; a < n; a++)
+        for (var b = 0; b < n; b++)
+        {
+            var entry = Get(a, b);
+            start[a * n + b] = blades.Count;
+            blades.AddRange(entry.Blades);
+            coefficients.AddRange(entry.Coefficients);
+        }
+        start[n * n] = blades.Count;
+        return _flat = new Flat(start, blades.ToArray(), coefficients.ToArray()); // a benign race, as in Get
+    }
+
     internal sealed class Entry(int[] blades, T[] coefficients, bool[] isOne)
     {
         public readonly int[] Blades = blades;
@@ -53,7 +95,12 @@ internal sealed class ProductTable<T> where T : INumberBase<T>
         if (_dense is not null)
         {
             var index = a * _frame.BladeCount + b;
-            return _dense[index] ??= Build(a, b); // a benign race: both builders produce equal entries
+            if (_dense[index] is { } known) return known;
+            var entry = Build(a, b);
+            // A benign race: both builders produce equal entries; only the first one stored is counted.
+            if (Interlocked.CompareExchange(ref _dense[index], entry, null) is { } other) return other;
+            Interlocked.Increment(ref _built);
+            return entry;
         }
         return _sparse!.GetOrAdd(((long)a << 32) | (uint)b, key => Build((int)(key >> 32), (int)key));
     }

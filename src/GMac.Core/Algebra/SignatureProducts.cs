@@ -10,13 +10,35 @@ namespace GMac.Core.Algebra;
 /// </summary>
 internal sealed class SignatureProducts
 {
+    /// <summary>Frames up to this many blades (8 dimensions) get a sign table per product kind: 64 KiB each at most.</summary>
+    public const int TabulatedBladeCount = 256;
+
     private readonly int _negative; // basis vectors squaring to −1
     private readonly int _null;     // basis vectors squaring to 0
+    private readonly int _bladeCount;
+    private readonly sbyte[]?[] _signTables = new sbyte[]?[Enum.GetValues<ProductKind>().Length];
 
-    private SignatureProducts(int negative, int nullVectors)
+    private SignatureProducts(int negative, int nullVectors, int bladeCount)
     {
         _negative = negative;
         _null = nullVectors;
+        _bladeCount = bladeCount;
+    }
+
+    /// <summary>
+    /// The sign of every blade product of one kind, indexed by a · bladeCount + b (the blade is
+    /// a XOR b), built on first use; null for frames above <see cref="TabulatedBladeCount"/> blades.
+    /// </summary>
+    public sbyte[]? SignTable(ProductKind kind)
+    {
+        if (_bladeCount > TabulatedBladeCount) return null;
+        var table = _signTables[(int)kind];
+        if (table is not null) return table;
+        table = new sbyte[_bladeCount * _bladeCount];
+        for (var a = 0; a < _bladeCount; a++)
+        for (var b = 0; b < _bladeCount; b++)
+            table[a * _bladeCount + b] = (sbyte)Product(kind, a, b, out _);
+        return _signTables[(int)kind] = table; // a benign race: every builder fills the same table
     }
 
     /// <summary>The products of a metric, or null when it is not diagonal with entries in {−1, 0, 1}.</summary>
@@ -31,7 +53,7 @@ internal sealed class SignatureProducts
             else if (square == Numerics.Rational.MinusOne) negative |= 1 << i;
             else if (!square.IsOne) return null;
         }
-        return new SignatureProducts(negative, nullVectors);
+        return new SignatureProducts(negative, nullVectors, 1 << metric.Dimension);
     }
 
     /// <summary>

@@ -13,6 +13,11 @@ public sealed class Atom : IComparable<Atom>
     private readonly int _hash;
     private Scalar? _asScalar;
 
+    private object? _fingerprint; // a boxed UInt128: a reference is published whole, a UInt128 field could tear
+
+    /// <summary>A digest of the canonical structure, stable across runs (see <see cref="StructuralFingerprint"/>).</summary>
+    internal UInt128 Fingerprint => (UInt128)(_fingerprint ??= StructuralFingerprint.Of(this));
+
     private Atom(AtomKind kind, string name, Scalar[] arguments)
     {
         Kind = kind;

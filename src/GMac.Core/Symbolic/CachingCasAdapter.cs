@@ -2,7 +2,9 @@ namespace GMac.Core.Symbolic;
 
 /// <summary>
 /// Puts a <see cref="SimplificationCache"/> in front of a CAS adapter: every answer is cached under
-/// the adapter name, the canonical text of the assumptions and of the expression.
+/// the adapter name, the canonical text of the assumptions and the structural fingerprint of the
+/// expression. The fingerprint, not the expression's text, keys the answer: the text of a large
+/// expression with shared subexpressions runs to megabytes, and printing it cost more than simplifying.
 /// </summary>
 public sealed class CachingCasAdapter(ICasAdapter inner, SimplificationCache cache) : ICasAdapter
 {
@@ -20,8 +22,7 @@ public sealed class CachingCasAdapter(ICasAdapter inner, SimplificationCache cac
         ArgumentNullException.ThrowIfNull(assumptions);
         // Constants and variables are already as simple as they get.
         if (expression.IsConstant) return expression;
-        // Equal expressions are one object, so a repeated question is answered without printing
-        // the expression into a text key (which costs as much as the expression is long).
+        // Equal expressions are one object, so a repeated question is answered without making a key.
         var answers = _byIdentity.GetValue(expression, _ => new Dictionary<string, Scalar>(StringComparer.Ordinal));
         lock (answers)
         {
@@ -51,5 +52,5 @@ public sealed class CachingCasAdapter(ICasAdapter inner, SimplificationCache cac
     public long TotalHits => IdentityHits + Cache.Hits;
 
     public string KeyOf(Scalar expression, Assumptions assumptions) =>
-        $"{Inner.Name} | {assumptions.Key} | {expression}";
+        $"{Inner.Name} | {assumptions.Key} | #{expression.Fingerprint:x32}";
 }

@@ -14,6 +14,11 @@ public sealed class Monomial : IComparable<Monomial>
     private readonly Factor[] _factors;
     private readonly int _hash;
 
+    private object? _fingerprint; // a boxed UInt128: a reference is published whole, a UInt128 field could tear
+
+    /// <summary>A digest of the canonical structure, stable across runs (see <see cref="StructuralFingerprint"/>).</summary>
+    internal UInt128 Fingerprint => (UInt128)(_fingerprint ??= StructuralFingerprint.Of(this));
+
     private Monomial(Factor[] factors)
     {
         _factors = factors;

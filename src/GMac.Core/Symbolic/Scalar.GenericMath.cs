@@ -169,9 +169,21 @@ public sealed partial class Scalar :
     /// <summary>The format and provider are ignored: the canonical text is culture-invariant.</summary>
     public string ToString(string? format, IFormatProvider? formatProvider) => ToString();
 
+    [ThreadStatic]
+    private static (Scalar Scalar, string Text)? _lastFormatted;
+
     public bool TryFormat(Span<char> destination, out int charsWritten, ReadOnlySpan<char> format, IFormatProvider? provider)
     {
-        var text = ToString();
+        // String interpolation retries with a doubled buffer until the text fits; keeping the last
+        // text makes those retries copies instead of printing the whole expression again each time.
+        var last = _lastFormatted;
+        string text;
+        if (last is not null && ReferenceEquals(last.Value.Scalar, this)) text = last.Value.Text;
+        else
+        {
+            text = ToString();
+            _lastFormatted = (this, text);
+        }
         if (text.Length > destination.Length)
         {
             charsWritten = 0;

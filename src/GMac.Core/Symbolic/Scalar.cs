@@ -24,6 +24,11 @@ public sealed partial class Scalar : IComparable<Scalar>
     private readonly int _hash;
     private IReadOnlySet<string>? _variables;
 
+    private object? _fingerprint; // a boxed UInt128: a reference is published whole, a UInt128 field could tear
+
+    /// <summary>A digest of the canonical structure, stable across runs (see <see cref="StructuralFingerprint"/>).</summary>
+    internal UInt128 Fingerprint => (UInt128)(_fingerprint ??= StructuralFingerprint.Of(this));
+
     private Scalar(Term[] terms)
     {
         _terms = terms;

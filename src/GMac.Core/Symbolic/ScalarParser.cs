@@ -18,10 +18,15 @@ internal sealed class ScalarParser
     private const int MaxDepth = 200;
 
     private readonly string _text;
+    private readonly List<Scalar>? _names;
     private int _position;
     private int _depth;
 
-    private ScalarParser(string text) => _text = text;
+    private ScalarParser(string text, List<Scalar>? names = null)
+    {
+        _text = text;
+        _names = names;
+    }
 
     public static Scalar Parse(string text)
     {
@@ -32,6 +37,36 @@ internal sealed class ScalarParser
         var result = parser.ParseSum();
         parser.SkipSpace();
         if (!parser.AtEnd) throw parser.Error($"unexpected '{text[parser._position]}'", parser._position);
+        return result;
+    }
+
+    /// <summary>
+    /// Reads the shared form of <see cref="ScalarPrinter.FormatShared"/>: definitions
+    /// <c>$k = expression;</c> numbered from 0, each reading only earlier names, then the expression.
+    /// </summary>
+    public static Scalar ParseShared(string text)
+    {
+        ArgumentNullException.ThrowIfNull(text);
+        var names = new List<Scalar>();
+        var parts = text.Split(';');
+        for (var i = 0; i < parts.Length - 1; i++)
+        {
+            var part = parts[i].AsSpan().Trim();
+            var prefix = $"${names.Count} =";
+            if (!part.StartsWith(prefix, StringComparison.Ordinal))
+                throw new ScalarSyntaxException($"expected the definition '{prefix} ...'", 1, parts[i]);
+            names.Add(new ScalarParser(part[prefix.Length..].ToString(), names).ParseWhole());
+        }
+        return new ScalarParser(parts[^1], names).ParseWhole();
+    }
+
+    private Scalar ParseWhole()
+    {
+        SkipSpace();
+        if (AtEnd) throw Error("expected an expression but the text is empty", _position);
+        var result = ParseSum();
+        SkipSpace();
+        if (!AtEnd) throw Error($"unexpected '{_text[_position]}'", _position);
         return result;
     }
 
@@ -157,6 +192,15 @@ internal sealed class ScalarParser
         if (char.IsAsciiDigit(c) || (c == '.' && _position + 1 < _text.Length && char.IsAsciiDigit(_text[_position + 1])))
             return ParseNumber();
         if (IsIdentifierStart(c)) return ParseName();
+        if (c == '$' && _names is not null)
+        {
+            _position++;
+            var digits = _position;
+            while (char.IsAsciiDigit(Current)) _position++;
+            if (!int.TryParse(_text.AsSpan(digits, _position - digits), out var index) || index >= _names.Count)
+                throw Error("'$' must be followed by the number of an earlier definition", start);
+            return _names[index];
+        }
         if (c == '(')
         {
             _position++;

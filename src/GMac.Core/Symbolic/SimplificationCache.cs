@@ -7,7 +7,7 @@ namespace GMac.Core.Symbolic;
 /// <summary>
 /// Remembers simplification answers by canonical key, in memory and optionally on disk so they
 /// survive runs. The disk form is one append-only text file of <c>key TAB result TAB checksum</c>
-/// lines: loaded lazily on the first lookup, appended and flushed per answer, and safe to delete.
+/// lines, results in the shared text form (each function and inverse written once): loaded lazily on the first lookup, appended and flushed per answer, and safe to delete.
 /// Lines that are truncated, corrupted or unreadable are ignored. Thread-safe.
 /// </summary>
 public sealed class SimplificationCache
@@ -71,7 +71,7 @@ public sealed class SimplificationCache
         if (key.AsSpan().IndexOfAny('\t', '\n', '\r') >= 0)
             throw new ArgumentException("A cache key cannot contain tabs or line breaks.", nameof(key));
         if (!_memory.TryAdd(key, result) || FilePath is null) return;
-        var text = result.ToString();
+        var text = ScalarPrinter.FormatShared(result);
         var line = $"{key}\t{text}\t{Checksum(key, text)}\n";
         bool flushNow;
         lock (_diskLock)
@@ -135,8 +135,15 @@ public sealed class SimplificationCache
             _disk ??= Load(FilePath);
             if (!_disk.TryGetValue(key, out var text)) return false;
             _disk.Remove(key);
-            if (!Scalar.TryParse(text, out result)) return false;
-            return true;
+            try
+            {
+                result = ScalarParser.ParseShared(text);
+                return true;
+            }
+            catch (Exception e) when (e is FormatException or ArgumentException or OverflowException or DivideByZeroException)
+            {
+                return false;
+            }
         }
     }
 

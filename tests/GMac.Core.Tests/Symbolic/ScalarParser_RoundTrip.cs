@@ -23,6 +23,38 @@ public class ScalarParser_RoundTrip
     }
 
     [Fact]
+    public void Shared_text_parses_back_to_the_same_object()
+    {
+        var trees = new RandomExpressionTrees(seed: 5);
+        for (var i = 0; i < 300; i++)
+        {
+            var s = trees.Next(depth: 5).Symbolic;
+            var shared = ScalarPrinter.FormatShared(s);
+            Assert.Same(s, ScalarParser.ParseShared(shared));
+            Assert.Same(s, ScalarParser.ParseShared(s.ToString())); // plain text is a shared text without definitions
+        }
+    }
+
+    [Fact]
+    public void Shared_text_names_each_function_and_inverse_once()
+    {
+        var x = Scalar.Variable("x");
+        var y = Scalar.Variable("y");
+        var inverse = Scalar.One / (x + y);
+        var s = x * inverse + y * inverse * inverse + Scalar.Sqrt(x * inverse + Scalar.One);
+        Assert.Equal("$0 = 1/(x + y); $1 = sqrt(1 + x*$0); x*$0 + y*$0^2 + $1", ScalarPrinter.FormatShared(s));
+    }
+
+    [Theory]
+    [InlineData("$0 = x; $2 = y; $0")]
+    [InlineData("$0 = x + ; $0")]
+    [InlineData("$0 = x; $1 + $0")]
+    public void Malformed_shared_text_is_refused(string text)
+    {
+        Assert.ThrowsAny<FormatException>(() => ScalarParser.ParseShared(text));
+    }
+
+    [Fact]
     public void Numbers_are_exact()
     {
         Assert.Same(Scalar.Constant(new Rational(5, 4)), Scalar.Parse("1.25"));

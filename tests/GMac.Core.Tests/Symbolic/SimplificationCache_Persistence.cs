@@ -110,6 +110,50 @@ public sealed class SimplificationCache_Persistence : IDisposable
         Assert.Contains(new RuleBasedCas().Name, cas.KeyOf(Root, NonNegative));
     }
 
+    [Fact]
+    public void Keys_stay_short_for_large_expressions_and_tell_expressions_apart()
+    {
+        var cas = new CachingCasAdapter(new RuleBasedCas(), new SimplificationCache());
+        var large = SharedDenominatorExpression(60);
+        Assert.True(large.ToString().Length > 20_000);
+        Assert.True(cas.KeyOf(large, Assumptions.None).Length < 200);
+
+        var trees = new RandomExpressionTrees(seed: 17);
+        var keys = new Dictionary<string, Scalar>(StringComparer.Ordinal);
+        for (var i = 0; i < 2000; i++)
+        {
+            var s = trees.Next(depth: 4).Symbolic;
+            var key = cas.KeyOf(s, Assumptions.None);
+            if (keys.TryGetValue(key, out var earlier)) Assert.Same(earlier, s);
+            else keys[key] = s;
+        }
+        Assert.True(keys.Count > 500);
+    }
+
+    [Fact]
+    public void A_large_answer_with_a_shared_denominator_is_stored_once_per_distinct_part_and_read_back()
+    {
+        var expression = SharedDenominatorExpression(60);
+        var first = new CachingCasAdapter(new CountingCas(), new SimplificationCache(_directory));
+        Assert.Same(expression, first.Simplify(expression, Assumptions.None));
+        first.Cache.Flush();
+        // Printed plainly, the 60-term denominator would be repeated in each of the 60 terms.
+        Assert.True(new FileInfo(first.Cache.FilePath!).Length * 10 < expression.ToString().Length);
+
+        var second = new CachingCasAdapter(new CountingCas(), new SimplificationCache(_directory));
+        Assert.Same(expression, second.Simplify(expression, Assumptions.None));
+        Assert.Equal(1, second.Cache.DiskHits);
+        Assert.Equal(0, ((CountingCas)second.Inner).Calls);
+    }
+
+    /// <summary>Σ xᵢ·sin(xᵢ) / Σ xⱼ²: each term carries the same inverse of a long sum.</summary>
+    private static Scalar SharedDenominatorExpression(int n)
+    {
+        var xs = Enumerable.Range(0, n).Select(i => Scalar.Variable($"x{i}")).ToArray();
+        var denominator = xs.Aggregate(Scalar.Zero, (sum, x) => sum + x * x);
+        return xs.Aggregate(Scalar.Zero, (sum, x) => sum + x * Scalar.Sin(x)) / denominator;
+    }
+
     private sealed class CountingCas : ICasAdapter
     {
         public int Calls { get; private set; }

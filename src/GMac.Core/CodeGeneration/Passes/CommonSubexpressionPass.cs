@@ -39,9 +39,16 @@ public sealed class CommonSubexpressionPass(Func<int, string> temporaryName) : I
         if (e is SumExpr or ProductExpr)
             children.Sort(ExprOrder.Compare);
         key = e.WithChildren(children);
+        // Equal keys are made one object: their children are already shared, so this look-up compares
+        // one level, and every later comparison of keys (counting, matching) stops at reference equality
+        // instead of walking both subtrees.
+        if (_interned.TryGetValue(key, out var shared)) key = shared;
+        else _interned[key] = key;
         _keys[e] = key;
         return key;
     }
+
+    private readonly Dictionary<Expr, Expr> _interned = new();
 
     /// <summary>The key shared by e and −e, and whether e is the negated one (a − b and b − a).</summary>
     private readonly Dictionary<Expr, (Expr, bool)> _canonical = new(ReferenceEqualityComparer.Instance);

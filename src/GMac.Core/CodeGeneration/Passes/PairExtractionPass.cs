@@ -64,22 +64,34 @@ public sealed class PairExtractionPass(Func<int, string> temporaryName) : IOptim
     {
         var counts = new Dictionary<(Pair, bool), int>();
         var order = new List<(Pair, bool)>();
+        // One item list and one set of pairs reused for every node: this runs once per extraction
+        // round over the whole block, and per-node collections made it mostly allocation and GC.
+        var items = new List<(Expr Item, bool Negated)>(MaxItems);
+        var seen = new HashSet<(Pair, bool)>();
+        var pending = new Stack<Expr>();
         foreach (var s in block.Statements)
         foreach (var root in s.Expressions)
-        foreach (var node in root.DescendantsAndSelf())
         {
-            if (node is not (SumExpr or ProductExpr)) continue;
-            var isProduct = node is ProductExpr;
-            var items = Items(node);
-            if (items.Count > MaxItems) continue;
-            var seen = new HashSet<(Pair, bool)>();
-            for (var i = 0; i < items.Count; i++)
-            for (var j = i + 1; j < items.Count; j++)
+            pending.Push(root);
+            while (pending.Count > 0)
             {
-                var key = (Orient(items[i], items[j], isProduct).Pair, isProduct);
-                if (!seen.Add(key)) continue;
-                if (counts.TryGetValue(key, out var c)) counts[key] = c + 1;
-                else { counts[key] = 1; order.Add(key); }
+                var node = pending.Pop();
+                var children = node.Children;
+                for (var c = 0; c < children.Count; c++) pending.Push(children[c]);
+                if (node is not (SumExpr or ProductExpr) || children.Count > MaxItems) continue;
+                var isProduct = node is ProductExpr;
+                items.Clear();
+                foreach (var child in children)
+                    items.Add(!isProduct && child is NegateExpr n ? (n.Operand, true) : (child, false));
+                seen.Clear();
+                for (var i = 0; i < items.Count; i++)
+                for (var j = i + 1; j < items.Count; j++)
+                {
+                    var key = (Orient(items[i], items[j], isProduct).Pair, isProduct);
+                    if (!seen.Add(key)) continue;
+                    if (counts.TryGetValue(key, out var count)) counts[key] = count + 1;
+                    else { counts[key] = 1; order.Add(key); }
+                }
             }
         }
         // Most shared first (stable: first seen first); then greedily those that share no item.

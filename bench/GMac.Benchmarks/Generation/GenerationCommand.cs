@@ -1,0 +1,58 @@
+using System.Globalization;
+
+namespace GMac.Benchmarks.Generation;
+
+/// <summary>
+/// <c>generation [--dsl DIR] [--macro NAME]...</c>: the generation suite of the report alone, printed as a
+/// table (every macro cold and warm, then the whole library), so it can be measured without timing kernels.
+/// </summary>
+public static class GenerationCommand
+{
+    public const string Usage = "usage: GMac.Benchmarks generation [--dsl DIR] [--macro NAME]...";
+
+    public static int Run(IReadOnlyList<string> args, TextWriter output, TextWriter error)
+    {
+        string? dsl = null;
+        var macros = new List<string>();
+        for (var i = 0; i < args.Count; i++)
+        {
+            if (args[i] is "--dsl" or "--macro" && i + 1 < args.Count)
+            {
+                if (args[i] == "--dsl") dsl = args[++i];
+                else macros.Add(args[++i]);
+                continue;
+            }
+            error.WriteLine($"generation: unknown or incomplete argument '{args[i]}'");
+            error.WriteLine(Usage);
+            return 2;
+        }
+        dsl ??= Path.Combine(Directory.GetCurrentDirectory(), "dsl");
+        if (!Directory.Exists(dsl))
+        {
+            error.WriteLine($"generation: no DSL folder '{dsl}'; pass --dsl");
+            return 2;
+        }
+        try
+        {
+            var timings = new GenerationTimer(dsl, warmRepeats: 5, macros.Count == 0 ? null : macros).Measure();
+            Write(timings, output);
+            return timings.Macros.Any(m => m.Error is not null) ? 1 : 0;
+        }
+        catch (InvalidOperationException e)
+        {
+            error.WriteLine($"generation: {e.Message}");
+            return 1;
+        }
+    }
+
+    private static void Write(GenerationTimings timings, TextWriter output)
+    {
+        static string F(double ms) => ms.ToString(ms < 10 ? "0.00" : ms < 100 ? "0.0" : "0", CultureInfo.InvariantCulture);
+        output.WriteLine($"first pass (JIT included): {F(timings.FirstPassMs)} ms; loading dsl: {F(timings.LoadMs)} ms");
+        output.WriteLine($"whole library: cold {F(timings.LibraryColdMs)} ms, warm {F(timings.LibraryWarmMs)} ms ({timings.Macros.Count} macros)");
+        output.WriteLine("| macro | cold ms | warm ms |");
+        output.WriteLine("|---|---:|---:|");
+        foreach (var m in timings.Macros.OrderByDescending(m => m.ColdMs))
+            output.WriteLine($"| {m.Macro} | {F(m.ColdMs)} | {F(m.WarmMs)} |{(m.Error is null ? "" : $" error: {m.Error}")}");
+    }
+}
