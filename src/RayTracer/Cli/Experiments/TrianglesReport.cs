@@ -23,8 +23,8 @@ public static class TrianglesReport
         Line($"Four tests: `moller` (Möller–Trumbore), `algebraic` (Cramer's rule, the base book's test), `plucker` (generated from `PluckerRayTriangle`, edge lines built per test from the vertices) and `plucker-edges` (generated from `PluckerRayTriangleLines`, on three edge lines and the plane stored per triangle).");
         Line($"*Render* is the whole render (the thesis's total test time): everything but the triangle test is the same, so differences come from the test. *Nearest hit* times BIH nearest-hit queries alone for {settings.NearestHitRays:N0} rays from the eye to random points of the mesh's bounds. Times are the best of the runs, which take the four tests in turn round after round; CPU time (of the whole process) is given besides wall time because the machine may be shared, and the ratios below use CPU time. *Bytes/triangle* is the heap that the triangle objects, their packed test data and the BIH keep alive (measured with full collections around their construction; shared vertices and normals excluded). *Image* compares each render with Möller–Trumbore's: the largest channel difference in linear radiance and the pixels that differ at all.");
         Line($"");
-        Line($"| scene (thesis) | test | triangles | rays | test invocations | render (ms) | nearest hit (ms) | bytes/triangle | image vs moller |");
-        Line($"|---|---|---:|---:|---:|---:|---:|---:|---|");
+        Line($"| scene (thesis) | test | triangles | rays | test invocations | render CPU (ms) | render wall (ms) | nearest hit CPU (ms) | nearest hit wall (ms) | bytes/triangle | image vs moller |");
+        Line($"|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|");
         foreach (var scene in scenes)
         {
             foreach (var r in results.Where(r => r.Scene == scene.Name))
@@ -37,7 +37,7 @@ public static class TrianglesReport
         Line($"");
         Line($"## Goals");
         Line($"");
-        Line($"Ratios of render CPU time (and of nearest-hit CPU time) in this run. Goals: Plücker at least as fast as the algebraic test (P/A ≤ 1) and within 1.1× of Möller–Trumbore (P/M ≤ 1.1). Process CPU time is read in 10 ms ticks here, so renders under about a second (at 320×240: mirror-column, bumpy-torus, bumpy-sphere) are only good to a few percent; on a quiet machine prefer `--width 640 --height 480 --repeats 5`.");
+        Line($"Ratios of render CPU time (and of nearest-hit CPU time) in this run. Goals: Plücker at least as fast as the algebraic test (P/A ≤ 1) and within 1.1× of Möller–Trumbore (P/M ≤ 1.1). Process CPU time is read in 10 ms ticks here, so renders under about a second are only good to a few percent; on a quiet machine prefer `--width 640 --height 480 --repeats 5`.");
         Line($"");
         Line($"| scene | plucker P/A | plucker P/M | plucker-edges P/A | plucker-edges P/M | nearest hit: plucker P/A, P/M | plucker-edges P/A, P/M |");
         Line($"|---|---:|---:|---:|---:|---:|---:|");
