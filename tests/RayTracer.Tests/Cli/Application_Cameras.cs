@@ -3,24 +3,10 @@ using RayTracer.Factories;
 
 namespace RayTracer.Tests.Cli;
 
-public sealed class Application_Cameras : IDisposable
+public sealed class Application_Cameras : CommandLineTest
 {
-    private readonly string _dir = Path.Combine(Path.GetTempPath(), "raytracer-cameras-" + Guid.NewGuid().ToString("N"));
-
-    public Application_Cameras() => Directory.CreateDirectory(_dir);
-
-    public void Dispose() => Directory.Delete(_dir, true);
-
-    private static (int Code, string Out, string Err) Run(params string[] args)
-    {
-        var stdout = new StringWriter();
-        var stderr = new StringWriter();
-        var code = Application.Run(args, stdout, stderr);
-        return (code, stdout.ToString(), stderr.ToString());
-    }
-
     private string[] Render(string scene, params string[] more) =>
-        ["render", scene, "-o", Path.Combine(_dir, "out.png"), "--width", "12", "--height", "8", "--spp", "1", "--threads", "2", .. more];
+        ["render", scene, "-o", Path.Combine(Dir, "out.png"), "--width", "12", "--height", "8", "--spp", "1", "--threads", "2", .. more];
 
     [Fact]
     public void List_shows_every_camera_of_the_catalogue()
@@ -40,7 +26,7 @@ public sealed class Application_Cameras : IDisposable
     {
         var (code, _, err) = Run(Render(scene, "--camera", camera));
         Assert.True(code == 0, err);
-        Assert.True(File.Exists(Path.Combine(_dir, "out.png")));
+        Assert.True(File.Exists(Path.Combine(Dir, "out.png")));
     }
 
     [Fact]
@@ -60,7 +46,7 @@ public sealed class Application_Cameras : IDisposable
     [InlineData("three finite numbers", "--look-at", "1,2,inf")]
     public void Bad_camera_options_are_usage_errors_with_a_message(string message, params string[] options)
     {
-        var output = Path.Combine(_dir, "out.png");
+        var output = Path.Combine(Dir, "out.png");
         var (code, _, err) = Run(Render("spheres", options));
         Assert.Equal(2, code);
         Assert.Contains(message, err);
@@ -74,6 +60,6 @@ public sealed class Application_Cameras : IDisposable
         var (code, _, err) = Run(Render("spheres", "--eye", "0,0.9,0"));
         Assert.Equal(2, code);
         Assert.Contains("distinct", err);
-        Assert.False(File.Exists(Path.Combine(_dir, "out.png")));
+        Assert.False(File.Exists(Path.Combine(Dir, "out.png")));
     }
 }

@@ -3,22 +3,8 @@ using RayTracer.Viewing.Imaging;
 
 namespace RayTracer.Tests.Cli;
 
-public sealed class Application_Commands : IDisposable
+public sealed class Application_Commands : CommandLineTest
 {
-    private readonly string _dir = Path.Combine(Path.GetTempPath(), "raytracer-cli-" + Guid.NewGuid().ToString("N"));
-
-    public Application_Commands() => Directory.CreateDirectory(_dir);
-
-    public void Dispose() => Directory.Delete(_dir, true);
-
-    private static (int Code, string Out, string Err) Run(params string[] args)
-    {
-        var stdout = new StringWriter();
-        var stderr = new StringWriter();
-        var code = Application.Run(args, stdout, stderr);
-        return (code, stdout.ToString(), stderr.ToString());
-    }
-
     [Fact]
     public void List_shows_every_scene_with_a_description()
     {
@@ -32,7 +18,7 @@ public sealed class Application_Commands : IDisposable
     [Fact]
     public void Render_writes_a_png_of_the_requested_size_and_a_summary()
     {
-        var path = Path.Combine(_dir, "out.png");
+        var path = Path.Combine(Dir, "out.png");
         var (code, _, err) = Run("render", "spheres", "-o", path, "--width", "16", "--height", "10", "--spp", "1", "--threads", "2");
         Assert.Equal(0, code);
         var image = ImageFile.ReadPixels(path);
@@ -47,7 +33,7 @@ public sealed class Application_Commands : IDisposable
     {
         string Render(string name, string threads, string seed)
         {
-            var path = Path.Combine(_dir, name);
+            var path = Path.Combine(Dir, name);
             Assert.Equal(0, Run("render", "light-area-disk", "-o", path, "--width", "12", "--height", "8", "--spp", "2", "--seed", seed, "--threads", threads).Code);
             return Convert.ToBase64String(File.ReadAllBytes(path));
         }
@@ -77,28 +63,28 @@ public sealed class Application_Commands : IDisposable
     public void Bad_arguments_exit_with_2_a_message_and_no_output_file(params string[] args)
     {
         var cwd = Environment.CurrentDirectory;
-        var resolved = args.Select(a => Path.HasExtension(a) ? Path.Combine(_dir, a) : a).ToArray();
+        var resolved = args.Select(a => Path.HasExtension(a) ? Path.Combine(Dir, a) : a).ToArray();
         var (code, _, err) = Run(resolved);
         Assert.Equal(2, code);
         Assert.StartsWith("raytracer: error:", err);
-        Assert.Empty(Directory.GetFiles(_dir));
+        Assert.Empty(Directory.GetFiles(Dir));
         Assert.Equal(cwd, Environment.CurrentDirectory);
     }
 
     [Fact]
     public void Image_option_maps_a_png_and_reports_a_bad_one_by_name()
     {
-        var texture = Path.Combine(_dir, "texture.png");
+        var texture = Path.Combine(Dir, "texture.png");
         var image = new PixelImage(4, 2, 3);
         Array.Fill(image.Data, (byte)200);
         ImageFile.SavePng(image, texture);
-        var good = Path.Combine(_dir, "good.png");
+        var good = Path.Combine(Dir, "good.png");
         Assert.Equal(0, Run("render", "texture-image", "-o", good, "--width", "8", "--height", "6", "--spp", "1", "--image", texture).Code);
         Assert.True(File.Exists(good));
 
-        var broken = Path.Combine(_dir, "broken.png");
+        var broken = Path.Combine(Dir, "broken.png");
         File.WriteAllBytes(broken, File.ReadAllBytes(texture)[..30]);
-        var output = Path.Combine(_dir, "never.png");
+        var output = Path.Combine(Dir, "never.png");
         var (code, _, err) = Run("render", "texture-image", "-o", output, "--width", "8", "--height", "6", "--image", broken);
         Assert.Equal(1, code);
         Assert.Contains(broken, err);
@@ -111,7 +97,7 @@ public sealed class Application_Commands : IDisposable
     [Fact]
     public void Unwritable_output_is_a_failure_not_a_crash()
     {
-        var blocker = Path.Combine(_dir, "file");
+        var blocker = Path.Combine(Dir, "file");
         File.WriteAllText(blocker, "");
         var (code, _, err) = Run("render", "spheres", "-o", Path.Combine(blocker, "out.png"), "--width", "4", "--height", "4", "--spp", "1");
         Assert.Equal(1, code);
@@ -121,7 +107,7 @@ public sealed class Application_Commands : IDisposable
     [Fact]
     public void Absurd_max_depth_is_a_usage_error_naming_the_limit()
     {
-        var output = Path.Combine(_dir, "deep.png");
+        var output = Path.Combine(Dir, "deep.png");
         var (code, _, err) = Run("render", "spheres", "-o", output, "--max-depth", "400", "--width", "2", "--height", "2", "--spp", "1");
         Assert.Equal(2, code);
         Assert.Contains("--max-depth must be between 0 and 100, got 400", err);
@@ -134,7 +120,7 @@ public sealed class Application_Commands : IDisposable
     [Fact]
     public void Render_never_touches_a_user_file_named_like_a_temporary()
     {
-        var folder = Path.Combine(_dir, "out");
+        var folder = Path.Combine(Dir, "out");
         Directory.CreateDirectory(folder);
         var output = Path.Combine(folder, "keep.png");
         File.WriteAllText(output + ".tmp", "notes");

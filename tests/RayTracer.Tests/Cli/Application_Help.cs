@@ -2,22 +2,8 @@ using RayTracer.Cli;
 
 namespace RayTracer.Tests.Cli;
 
-public sealed class Application_Help : IDisposable
+public sealed class Application_Help : CommandLineTest
 {
-    private readonly string _dir = Path.Combine(Path.GetTempPath(), "raytracer-help-" + Guid.NewGuid().ToString("N"));
-
-    public Application_Help() => Directory.CreateDirectory(_dir);
-
-    public void Dispose() => Directory.Delete(_dir, true);
-
-    private static (int Code, string Out, string Err) Run(params string[] args)
-    {
-        var stdout = new StringWriter();
-        var stderr = new StringWriter();
-        var code = Application.Run(args, stdout, stderr);
-        return (code, stdout.ToString(), stderr.ToString());
-    }
-
     [Theory]
     [InlineData(new[] { "--help" }, new[] { "list", "render", "bench" })]
     [InlineData(new[] { "-h" }, new[] { "list", "render", "bench" })]
@@ -39,7 +25,7 @@ public sealed class Application_Help : IDisposable
     [Fact]
     public void A_misspelt_option_exits_2_naming_it_and_suggesting_the_right_one()
     {
-        var output = Path.Combine(_dir, "x.png");
+        var output = Path.Combine(Dir, "x.png");
         var (code, _, err) = Run("render", "spheres", "-o", output, "--sampels", "4");
         Assert.Equal(2, code);
         Assert.StartsWith("raytracer: error:", err);
@@ -55,7 +41,7 @@ public sealed class Application_Help : IDisposable
     [InlineData("--spp=4", "--width", "6")]
     public void Options_take_their_value_after_a_space_or_an_equals_sign(params string[] options)
     {
-        var output = Path.Combine(_dir, "eq.png");
+        var output = Path.Combine(Dir, "eq.png");
         var (code, _, err) = Run(["render", "spheres", "-o", output, "--height", "4", "--threads", "1", .. options]);
         Assert.Equal(0, code);
         Assert.Contains("6x4, 4 spp", err);
@@ -64,7 +50,7 @@ public sealed class Application_Help : IDisposable
     [Fact]
     public void Out_of_range_values_name_the_option_and_the_limits()
     {
-        var (code, _, err) = Run("render", "-o", Path.Combine(_dir, "x.png"), "--threads", "0");
+        var (code, _, err) = Run("render", "-o", Path.Combine(Dir, "x.png"), "--threads", "0");
         Assert.Equal(2, code);
         Assert.Contains("--threads must be between 1 and 1024, got 0", err);
     }
@@ -72,7 +58,7 @@ public sealed class Application_Help : IDisposable
     [Fact]
     public void An_unsupported_output_extension_names_it_and_the_accepted_ones()
     {
-        var (code, _, err) = Run("render", "-o", Path.Combine(_dir, "x.tiff"));
+        var (code, _, err) = Run("render", "-o", Path.Combine(Dir, "x.tiff"));
         Assert.Equal(2, code);
         Assert.Contains("'.tiff'", err);
         Assert.Contains(".png, .hdr", err);

@@ -9,22 +9,12 @@ using RayTracer.Viewing.Imaging;
 
 namespace RayTracer.Tests.Cli;
 
-public sealed class Application_MeshStudio : IDisposable
+public sealed class Application_MeshStudio : CommandLineTest
 {
     private const int Width = 64, Height = 48;
-    private readonly string _dir = Path.Combine(Path.GetTempPath(), "raytracer-mesh-" + Guid.NewGuid().ToString("N"));
 
-    public Application_MeshStudio() => Directory.CreateDirectory(_dir);
 
-    public void Dispose() => Directory.Delete(_dir, true);
 
-    private static (int Code, string Out, string Err) Run(params string[] args)
-    {
-        var stdout = new StringWriter();
-        var stderr = new StringWriter();
-        var code = Application.Run(args, stdout, stderr);
-        return (code, stdout.ToString(), stderr.ToString());
-    }
 
     /// <summary>A regular tetrahedron away from the origin, in ASCII PLY with one line a strict reader would not know.</summary>
     private static readonly Point3D[] Tetrahedron =
@@ -37,7 +27,7 @@ public sealed class Application_MeshStudio : IDisposable
         foreach (var p in Tetrahedron)
             text.Append(CultureInfo.InvariantCulture, $"{p.x} {p.y} {p.z}\n");
         text.Append("3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n");
-        var path = Path.Combine(_dir, "tetra.ply");
+        var path = Path.Combine(Dir, "tetra.ply");
         File.WriteAllText(path, text.ToString());
         return path;
     }
@@ -46,7 +36,7 @@ public sealed class Application_MeshStudio : IDisposable
     public void Renders_a_mesh_file_with_the_whole_mesh_in_view_on_a_ground()
     {
         var mesh = WriteTetrahedronPly();
-        var output = Path.Combine(_dir, "tetra.png");
+        var output = Path.Combine(Dir, "tetra.png");
 
         var (code, _, err) = Run("render", "--mesh", mesh, "-o", output, "--width", $"{Width}", "--height", $"{Height}", "--spp", "1", "--threads", "1");
 
@@ -95,9 +85,9 @@ public sealed class Application_MeshStudio : IDisposable
     [Fact]
     public void A_malformed_mesh_is_reported_at_its_line_and_nothing_is_written()
     {
-        var mesh = Path.Combine(_dir, "broken.ply");
+        var mesh = Path.Combine(Dir, "broken.ply");
         File.WriteAllText(mesh, "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 zero 0\n");
-        var output = Path.Combine(_dir, "never.png");
+        var output = Path.Combine(Dir, "never.png");
 
         var (code, _, err) = Run("render", "--mesh", mesh, "-o", output);
 
@@ -111,7 +101,7 @@ public sealed class Application_MeshStudio : IDisposable
     public void A_mesh_with_a_scene_name_is_a_usage_error()
     {
         var mesh = WriteTetrahedronPly();
-        var (code, _, err) = Run("render", "spheres", "--mesh", mesh, "-o", Path.Combine(_dir, "x.png"));
+        var (code, _, err) = Run("render", "spheres", "--mesh", mesh, "-o", Path.Combine(Dir, "x.png"));
         Assert.Equal(2, code);
         Assert.Contains("--mesh", err);
         Assert.Contains("'spheres'", err);

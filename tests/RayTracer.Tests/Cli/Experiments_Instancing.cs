@@ -8,14 +8,8 @@ using RayTracer.Viewing.Imaging;
 
 namespace RayTracer.Tests.Cli;
 
-public sealed class Experiments_Instancing : IDisposable
+public sealed class Experiments_Instancing : CommandLineTest
 {
-    private readonly string _dir = Path.Combine(Path.GetTempPath(), "raytracer-instancing-" + Guid.NewGuid().ToString("N"));
-
-    public Experiments_Instancing() => Directory.CreateDirectory(_dir);
-
-    public void Dispose() => Directory.Delete(_dir, true);
-
     public static TheoryData<int> SceneIndices => [0, 1, 2, 3];
 
     [Theory]
@@ -60,31 +54,31 @@ public sealed class Experiments_Instancing : IDisposable
     {
         var stdout = new StringWriter();
         var stderr = new StringWriter();
-        var code = Application.Run(["experiments", "instancing", "--quick", "-o", _dir, "--width", "32", "--height", "24"], stdout, stderr);
+        var code = Application.Run(["experiments", "instancing", "--quick", "-o", Dir, "--width", "32", "--height", "24"], stdout, stderr);
         Assert.True(code == 0, stderr.ToString());
-        var report = File.ReadAllText(Path.Combine(_dir, "instancing.md"));
+        var report = File.ReadAllText(Path.Combine(Dir, "instancing.md"));
         Assert.Contains("| **Total test invocations** | U-Cyl |", report);
         Assert.Contains("| **Bytes per cylinder** | U-Cyl |", report);
         Assert.Contains("experiments instancing --quick", report);
         foreach (var name in new[] { "time", "memory", "gain", "instancing-blocks", "instancing-helix", "instancing-epitrochoid", "instancing-column" })
         {
-            var png = Path.Combine(_dir, "instancing", name + ".png");
+            var png = Path.Combine(Dir, "instancing", name + ".png");
             Assert.True(File.Exists(png), png);
             Assert.Contains($"instancing/{name}.png", report);
         }
 
-        var image = ImageFile.ReadPixels(Path.Combine(_dir, "instancing", "instancing-helix.png"));
+        var image = ImageFile.ReadPixels(Path.Combine(Dir, "instancing", "instancing-helix.png"));
         Assert.Equal((32, 24), (image.Width, image.Height));
-        Assert.Empty(Directory.GetFiles(_dir, "*.tmp*", SearchOption.AllDirectories));
+        Assert.Empty(Directory.GetFiles(Dir, "*.tmp*", SearchOption.AllDirectories));
     }
 
     [Fact]
     public void A_bad_size_is_a_usage_error_and_writes_nothing()
     {
         var stderr = new StringWriter();
-        var code = Application.Run(["experiments", "instancing", "-o", _dir, "--width", "0"], new StringWriter(), stderr);
+        var code = Application.Run(["experiments", "instancing", "-o", Dir, "--width", "0"], new StringWriter(), stderr);
         Assert.Equal(2, code);
         Assert.Contains("--width", stderr.ToString());
-        Assert.Empty(Directory.GetFileSystemEntries(_dir));
+        Assert.Empty(Directory.GetFileSystemEntries(Dir));
     }
 }
