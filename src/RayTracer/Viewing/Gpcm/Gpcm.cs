@@ -1,4 +1,3 @@
-using System.Runtime.CompilerServices;
 using RayTracer.Maths;
 using RayTracer.Tracing;
 using Twister;
@@ -146,12 +145,11 @@ public sealed class Gpcm(IParametricSurface surface, GpcmMapping mapping = GpcmM
     /// same points as <see cref="IParametricSurface.PointAt"/>; u and v come from finite view-plane
     /// coordinates, so their checks are skipped).
     /// </summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private TwistablePoint SurfacePoint(double u, double v) => Surface switch
     {
-        RectangularProjectionSurface rectangle => rectangle.PointAt(u, v),
         SingleTwistSurface twisted => twisted.Cascade.Apply(twisted.Seed,
             twisted.UStart + u * (twisted.UEnd - twisted.UStart), twisted.VStart + v * (twisted.VEnd - twisted.VStart)),
+        RectangularProjectionSurface rectangle => rectangle.PointAt(u, v),
         _ => Surface.PointAt(u, v),
     };
 
