@@ -85,6 +85,21 @@ public struct BoundingBox
     }
 
     /// <summary>Box grown by <paramref name="delta"/> on every side.</summary>
+    /// <summary>
+    /// The box around the images of the eight corners under a map that keeps straight lines (affine
+    /// maps, rotations, mirrors, scalings): it contains the image of the whole box. An empty box stays
+    /// empty and an unbounded one becomes infinite.
+    /// </summary>
+    public readonly BoundingBox Map(Func<Point3D, Point3D> affine)
+    {
+        if (IsEmpty || !IsFinite)
+            return IsEmpty ? this : Infinite;
+        var result = Empty;
+        for (var i = 0; i < 8; i++)
+            result.Include(affine(new Point3D((i & 1) == 0 ? Min.x : Max.x, (i & 2) == 0 ? Min.y : Max.y, (i & 4) == 0 ? Min.z : Max.z)));
+        return result;
+    }
+
     public readonly BoundingBox Expanded(double delta) =>
         new(new Point3D(Min.x - delta, Min.y - delta, Min.z - delta),
             new Point3D(Max.x + delta, Max.y + delta, Max.z + delta));

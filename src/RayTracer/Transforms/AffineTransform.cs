@@ -177,25 +177,7 @@ public sealed class AffineTransform
     public Ray TransformRay(in Ray ray) => new(Apply(_m, ray.o), ApplyLinear(_m, ray.d));
 
     /// <summary>Axis-aligned box enclosing the image of <paramref name="box"/>.</summary>
-    public BoundingBox TransformBox(in BoundingBox box)
-    {
-        if (box.IsEmpty || !box.IsFinite)
-        {
-            return box.IsEmpty ? box : BoundingBox.Infinite;
-        }
-
-        var result = BoundingBox.Empty;
-        for (int i = 0; i < 8; i++)
-        {
-            var corner = new Point3D(
-                (i & 1) == 0 ? box.Min.x : box.Max.x,
-                (i & 2) == 0 ? box.Min.y : box.Max.y,
-                (i & 4) == 0 ? box.Min.z : box.Max.z);
-            result.Include(TransformPoint(corner));
-        }
-
-        return result;
-    }
+    public BoundingBox TransformBox(in BoundingBox box) => box.Map(TransformPoint);
 
     private static Point3D Apply(double[] m, Point3D p) => new(
         m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3],

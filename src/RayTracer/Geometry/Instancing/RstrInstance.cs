@@ -90,20 +90,12 @@ public sealed class RstrInstance : GeometricObject
 
     public override BoundingBox GetBoundingBox()
     {
-        var box = Target.GetBoundingBox();
-        if (box.IsEmpty || !box.IsFinite)
-            return box.IsEmpty ? box : BoundingBox.Infinite;
-        var result = BoundingBox.Empty;
-        for (var i = 0; i < 8; i++)
+        var box = Target.GetBoundingBox().Map(p =>
         {
-            var corner = MirrorLocal(new Vector3D(
-                (i & 1) == 0 ? box.Min.x : box.Max.x,
-                (i & 2) == 0 ? box.Min.y : box.Max.y,
-                (i & 4) == 0 ? box.Min.z : box.Max.z));
-            result.Include(new Point3D(_px + corner.x, _py + corner.y, _pz + corner.z));
-        }
-
-        return result.Expanded(1e-9);
+            var moved = MirrorLocal(new Vector3D(p.x, p.y, p.z));
+            return new Point3D(_px + moved.x, _py + moved.y, _pz + moved.z);
+        });
+        return box.IsEmpty || !box.IsFinite ? box : box.Expanded(1e-9);
     }
 
     private Vector3D MirrorLocal(Vector3D x)

@@ -84,19 +84,8 @@ public sealed class TsrInstance : GeometricObject
 
     public override BoundingBox GetBoundingBox()
     {
-        var box = Target.GetBoundingBox();
-        if (box.IsEmpty || !box.IsFinite)
-            return box.IsEmpty ? box : BoundingBox.Infinite;
-        var result = BoundingBox.Empty;
-        for (var i = 0; i < 8; i++)
-        {
-            result.Include(_tsr.ToWorld(new Point3D(
-                (i & 1) == 0 ? box.Min.x : box.Max.x,
-                (i & 2) == 0 ? box.Min.y : box.Max.y,
-                (i & 4) == 0 ? box.Min.z : box.Max.z)));
-        }
-
-        return result.Expanded(1e-9 * (1 + _tsr.scale));
+        var box = Target.GetBoundingBox().Map(_tsr.ToWorld);
+        return box.IsEmpty || !box.IsFinite ? box : box.Expanded(1e-9 * (1 + _tsr.scale));
     }
 
     private Ray ToLocal(in Ray ray)
