@@ -114,12 +114,7 @@ internal sealed record CameraRequest(string? Camera, Point3D? Eye, Point3D? Look
                 current.Eye = eye;
                 current.LookAt = lookAt;
                 current.Up = up;
-                if (current is Viewing.Gpcm gpcm)
-                    gpcm.Orient();
-                else if (current is Viewing.StereoCamera stereo)
-                    stereo.SetUpCameras();
-                else
-                    current.ComputeUVW();
+                current.Aim();
             }
         }
         catch (ArgumentException e)

@@ -59,10 +59,7 @@ public sealed class CameraChoice
         camera.Eye = eye;
         camera.LookAt = lookAt;
         camera.Up = up;
-        if (camera is Gpcm gpcm)
-            gpcm.Orient();
-        else
-            camera.ComputeUVW();
+        camera.Aim();
         return camera;
     }
 }

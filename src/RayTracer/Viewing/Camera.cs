@@ -45,6 +45,13 @@ public abstract class Camera
         W = w;
     }
 
+    /// <summary>
+    /// Recomputes whatever the camera derives from <see cref="Eye"/>, <see cref="LookAt"/> and
+    /// <see cref="Up"/>; call after changing them. Cameras with more to derive (the generalized pinhole
+    /// camera's rotor, a stereo pair's two eyes) override it.
+    /// </summary>
+    public virtual void Aim() => ComputeUVW();
+
     /// <summary>Width of the rendered image in pixels (stereo pairs are wider than the view plane).</summary>
     public virtual int ImageWidth(ViewPlane vp) => vp.HorizontalResolution;
 

@@ -38,6 +38,8 @@ public sealed class StereoCamera : Camera
         Right.ComputeUVW();
     }
 
+    public override void Aim() => SetUpCameras();
+
     public override int ImageWidth(ViewPlane vp) => 2 * vp.HorizontalResolution + PixelGap;
 
     public override bool GetRay(Point2D pp, ViewPlane vp, out Ray ray) => Left.GetRay(pp, vp, out ray);

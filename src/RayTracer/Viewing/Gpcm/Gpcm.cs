@@ -122,6 +122,8 @@ public sealed class Gpcm(IParametricSurface surface, GpcmMapping mapping = GpcmM
     /// <summary>Orients the camera from <see cref="Camera.Eye"/>, <see cref="Camera.LookAt"/> and <see cref="Camera.Up"/>; call after changing them.</summary>
     public GpcmOrientation Orient() => Orientation = GpcmOrientation.LookingAt(Eye, LookAt, Up);
 
+    public override void Aim() => Orient();
+
     /// <summary>The surface parameters of view-plane point <paramref name="pp"/>.</summary>
     public static (double u, double v) RectangularMap(Point2D pp, ViewPlane vp) =>
         (pp.x / (vp.HorizontalResolution * vp.PixelSize) + 0.5, pp.y / (vp.VerticalResolution * vp.PixelSize) + 0.5);
