@@ -97,18 +97,18 @@ public static class GeometryKernels
         double tmp0 = axis.z * axis.z + axis.y * axis.y + axis.x * axis.x;
         double tmp1 = 1.0 / tmp0;
         double tmp2 = Math.Sqrt(tmp1);
-        double tmp3 = 1.0 - Math.Cos(angle);
-        double tmp4 = through.y - point.y;
-        double tmp5 = through.x - point.x;
-        double tmp6 = point.z - through.z;
-        double tmp7 = Math.Sin(angle);
-        double tmp8 = -(tmp2 * tmp4);
-        double tmp9 = tmp2 * tmp6;
-        double tmp10 = (tmp6 * axis.z - axis.x * tmp5 - axis.y * tmp4) * tmp1;
-        result.x = tmp7 * (axis.y * tmp9 - axis.z * tmp8) + point.x - tmp3 * (-(axis.x * tmp10) - tmp5);
-        double tmp11 = -(tmp2 * tmp5);
-        result.y = tmp7 * (axis.z * tmp11 - axis.x * tmp9) + point.y - tmp3 * (-(axis.y * tmp10) - tmp4);
-        result.z = tmp7 * (axis.x * tmp8 - axis.y * tmp11) + point.z - tmp3 * (tmp6 - axis.z * tmp10);
+        var (tmp8, tmp3) = Math.SinCos(angle);
+        double tmp4 = 1.0 - tmp3;
+        double tmp5 = through.y - point.y;
+        double tmp6 = through.x - point.x;
+        double tmp7 = point.z - through.z;
+        double tmp9 = -(tmp2 * tmp5);
+        double tmp10 = tmp2 * tmp7;
+        double tmp11 = (tmp7 * axis.z - axis.x * tmp6 - axis.y * tmp5) * tmp1;
+        result.x = tmp8 * (axis.y * tmp10 - axis.z * tmp9) + point.x - tmp4 * (-(axis.x * tmp11) - tmp6);
+        double tmp12 = -(tmp2 * tmp6);
+        result.y = tmp8 * (axis.z * tmp12 - axis.x * tmp10) + point.y - tmp4 * (-(axis.y * tmp11) - tmp5);
+        result.z = tmp8 * (axis.x * tmp9 - axis.y * tmp12) + point.z - tmp4 * (tmp7 - axis.z * tmp11);
         #endregion
 
         return result;

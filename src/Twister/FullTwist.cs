@@ -70,11 +70,11 @@ public sealed class FullTwist : Twist
         double tmp3 = origin.x - p.x;
         double tmp4 = -(tmp3 * unit.z) - tmp0 * unit.x;
         double tmp5 = tmp3 * unit.y - tmp1 * unit.x;
-        double tmp6 = Math.Cos(angle) - 1.0;
-        double tmp7 = Math.Sin(angle);
-        y.x = tmp2 * tmp7 + axis.x * slide + p.x + tmp6 * (tmp4 * unit.z - tmp5 * unit.y);
-        y.y = tmp4 * tmp7 + axis.y * slide + p.y + tmp6 * (tmp5 * unit.x - tmp2 * unit.z);
-        y.z = tmp5 * tmp7 + slide * axis.z + p.z + tmp6 * (tmp2 * unit.y - tmp4 * unit.x);
+        var (tmp8, tmp6) = Math.SinCos(angle);
+        double tmp7 = tmp6 - 1.0;
+        y.x = tmp2 * tmp8 + axis.x * slide + p.x + tmp7 * (tmp4 * unit.z - tmp5 * unit.y);
+        y.y = tmp4 * tmp8 + axis.y * slide + p.y + tmp7 * (tmp5 * unit.x - tmp2 * unit.z);
+        y.z = tmp5 * tmp8 + slide * axis.z + p.z + tmp7 * (tmp2 * unit.y - tmp4 * unit.x);
         #endregion
 
         return y;

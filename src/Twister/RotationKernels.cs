@@ -18,11 +18,11 @@ internal static class RotationKernels
         double tmp0 = axis.y * d.z - axis.z * d.y;
         double tmp1 = axis.z * d.x - axis.x * d.z;
         double tmp2 = axis.x * d.y - axis.y * d.x;
-        double tmp3 = Math.Cos(angle) - 1.0;
-        double tmp4 = Math.Sin(angle);
-        y.x = tmp0 * tmp4 + d.x + tmp3 * (tmp1 * axis.z - tmp2 * axis.y);
-        y.y = tmp1 * tmp4 + d.y + tmp3 * (tmp2 * axis.x - tmp0 * axis.z);
-        y.z = tmp2 * tmp4 + d.z + tmp3 * (tmp0 * axis.y - tmp1 * axis.x);
+        var (tmp5, tmp3) = Math.SinCos(angle);
+        double tmp4 = tmp3 - 1.0;
+        y.x = tmp0 * tmp5 + d.x + tmp4 * (tmp1 * axis.z - tmp2 * axis.y);
+        y.y = tmp1 * tmp5 + d.y + tmp4 * (tmp2 * axis.x - tmp0 * axis.z);
+        y.z = tmp2 * tmp5 + d.z + tmp4 * (tmp0 * axis.y - tmp1 * axis.x);
         #endregion
 
         return y;
@@ -38,13 +38,13 @@ internal static class RotationKernels
         //GMac.Bind("angle.1", angle);
         //GMac.Bind("b", "Bivector3D", b);
         //GMac.Bind("y", "Bivector3D", y);
-        double tmp0 = Math.Cos(angle) - 1.0;
-        double tmp1 = Math.Sin(angle);
-        double tmp2 = b.xy * axis.z + b.zx * axis.y;
-        double tmp3 = -(b.yz * axis.x) - tmp2;
-        y.xy = tmp1 * (axis.x * b.zx - axis.y * b.yz) + b.xy + tmp0 * (axis.z * tmp3 + b.xy);
-        y.yz = tmp1 * (axis.y * b.xy - axis.z * b.zx) + b.yz + tmp0 * (b.yz * (axis.y * axis.y + axis.z * axis.z) - axis.x * tmp2);
-        y.zx = tmp1 * (axis.z * b.yz - axis.x * b.xy) + b.zx + tmp0 * (axis.y * tmp3 + b.zx);
+        var (tmp2, tmp0) = Math.SinCos(angle);
+        double tmp1 = tmp0 - 1.0;
+        double tmp3 = b.xy * axis.z + b.zx * axis.y;
+        double tmp4 = -(b.yz * axis.x) - tmp3;
+        y.xy = tmp2 * (axis.x * b.zx - axis.y * b.yz) + b.xy + tmp1 * (axis.z * tmp4 + b.xy);
+        y.yz = tmp2 * (axis.y * b.xy - axis.z * b.zx) + b.yz + tmp1 * (b.yz * (axis.y * axis.y + axis.z * axis.z) - axis.x * tmp3);
+        y.zx = tmp2 * (axis.z * b.yz - axis.x * b.xy) + b.zx + tmp1 * (axis.y * tmp4 + b.zx);
         #endregion
 
         return y;

@@ -67,11 +67,11 @@ public sealed class RotationTwist : Twist
         double tmp3 = origin.x - p.x;
         double tmp4 = -(tmp3 * axis.z) - tmp0 * axis.x;
         double tmp5 = tmp3 * axis.y - tmp1 * axis.x;
-        double tmp6 = 1.0 - Math.Cos(angle);
-        double tmp7 = Math.Sin(angle);
-        y.x = tmp2 * tmp7 + p.x - tmp6 * (tmp4 * axis.z - tmp5 * axis.y);
-        y.y = tmp4 * tmp7 + p.y - tmp6 * (tmp5 * axis.x - tmp2 * axis.z);
-        y.z = tmp5 * tmp7 + p.z - tmp6 * (tmp2 * axis.y - tmp4 * axis.x);
+        var (tmp8, tmp6) = Math.SinCos(angle);
+        double tmp7 = 1.0 - tmp6;
+        y.x = tmp2 * tmp8 + p.x - tmp7 * (tmp4 * axis.z - tmp5 * axis.y);
+        y.y = tmp4 * tmp8 + p.y - tmp7 * (tmp5 * axis.x - tmp2 * axis.z);
+        y.z = tmp5 * tmp8 + p.z - tmp7 * (tmp2 * axis.y - tmp4 * axis.x);
         #endregion
 
         return y;

@@ -93,16 +93,16 @@ public sealed class RotorInterpolateKernel : GaKernel<RotorPair, Rotor3>
         double tmp12 = p.Alpha * Math.Atan2(tmp11 / Math.Sqrt(tmp10 - tmp9), 1.0);
         double tmp13 = Math.Abs(tmp12);
         double tmp14 = 1.0 / (tmp11 * tmp13);
-        double tmp15 = Math.Cos(tmp13);
+        var (tmp18, tmp15) = Math.SinCos(tmp13);
         double tmp16 = p.R1.x * tmp14;
         double tmp17 = tmp14 * (tmp0 + tmp4) + p.R2.x * tmp16;
-        double tmp18 = tmp12 * Math.Sin(tmp13);
-        r.w = (p.R2.w * (tmp14 * (p.R1.y * p.R1.y + p.R1.z * p.R1.z) + p.R1.x * tmp16) - p.R1.w * tmp17) * tmp18 + p.R1.w * tmp15;
-        double tmp19 = -((-(tmp14 * tmp1) - tmp17) * tmp18) - tmp15;
-        double tmp20 = tmp14 * tmp18;
-        r.x = p.R2.x * tmp20 - p.R1.x * tmp19;
-        r.y = p.R2.y * tmp20 - p.R1.y * tmp19;
-        r.z = p.R2.z * tmp20 - p.R1.z * tmp19;
+        double tmp19 = tmp12 * tmp18;
+        r.w = (p.R2.w * (tmp14 * (p.R1.y * p.R1.y + p.R1.z * p.R1.z) + p.R1.x * tmp16) - p.R1.w * tmp17) * tmp19 + p.R1.w * tmp15;
+        double tmp20 = -((-(tmp14 * tmp1) - tmp17) * tmp19) - tmp15;
+        double tmp21 = tmp14 * tmp19;
+        r.x = p.R2.x * tmp21 - p.R1.x * tmp20;
+        r.y = p.R2.y * tmp21 - p.R1.y * tmp20;
+        r.z = p.R2.z * tmp21 - p.R1.z * tmp20;
         #endregion
     }
 
