@@ -11,7 +11,9 @@ namespace GMac.Benchmarks.Cameras;
 /// cameras they reproduce, each building <see cref="Rays"/> rays through random view-plane points of a
 /// 640×360 image from the same eye, look-at point and up direction. Results are per ray; each category
 /// compares a GPCM with its hand camera (the baseline). The cylindrical and conic panoramas have no hand
-/// counterpart and are listed for scale.
+/// counterpart and are listed for scale. The "Cascade" rows are the same GPCMs taking every ray the
+/// general way any surface takes (Twister cascade, then the turn into the world) instead of their
+/// generated lens kernel.
 /// </summary>
 [GroupBenchmarksBy(BenchmarkLogicalGroupRule.ByCategory)]
 [CategoriesColumn]
@@ -37,6 +39,13 @@ public class PrimaryRayBenchmarks
             if (!CameraCatalog.TryFind(name, out var choice))
                 throw new InvalidOperationException($"no camera '{name}'");
             _cameras[name] = choice.Create(degrees, _plane, eye, lookAt, up);
+            if (_cameras[name] is Gpcm)
+            {
+                // The same camera taking every ray the general way (cascade, then the turn into the world).
+                var general = (Gpcm)choice.Create(degrees, _plane, eye, lookAt, up);
+                general.EvaluateThroughCascade = true;
+                _cameras[name + "-cascade"] = general;
+            }
         }
     }
 
@@ -56,17 +65,26 @@ public class PrimaryRayBenchmarks
     [Benchmark(OperationsPerInvoke = Rays), BenchmarkCategory("rectangular")]
     public double RectangularGpcm() => Sweep("rectangular");
 
+    [Benchmark(OperationsPerInvoke = Rays), BenchmarkCategory("rectangular")]
+    public double RectangularGpcmCascade() => Sweep("rectangular-cascade");
+
     [Benchmark(Baseline = true, OperationsPerInvoke = Rays), BenchmarkCategory("spherical")]
     public double SphericalHand() => Sweep("spherical-hand");
 
     [Benchmark(OperationsPerInvoke = Rays), BenchmarkCategory("spherical")]
     public double SphericalGpcm() => Sweep("spherical");
 
+    [Benchmark(OperationsPerInvoke = Rays), BenchmarkCategory("spherical")]
+    public double SphericalGpcmCascade() => Sweep("spherical-cascade");
+
     [Benchmark(Baseline = true, OperationsPerInvoke = Rays), BenchmarkCategory("fisheye")]
     public double FisheyeHand() => Sweep("fisheye-hand");
 
     [Benchmark(OperationsPerInvoke = Rays), BenchmarkCategory("fisheye")]
     public double FisheyeGpcm() => Sweep("fisheye");
+
+    [Benchmark(OperationsPerInvoke = Rays), BenchmarkCategory("fisheye")]
+    public double FisheyeGpcmCascade() => Sweep("fisheye-cascade");
 
     [Benchmark(Baseline = true, OperationsPerInvoke = Rays), BenchmarkCategory("panoramas")]
     public double CylindricalGpcm() => Sweep("cylindrical");

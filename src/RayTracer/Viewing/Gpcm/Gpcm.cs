@@ -143,12 +143,20 @@ public sealed class Gpcm(IParametricSurface surface, GpcmMapping mapping = GpcmM
     }
 
     /// <summary>
+    /// False (the default): the catalogue's lenses take each ray from their generated kernel. True: every
+    /// ray goes the general way any surface takes (the surface's cascade, then the turn into the world),
+    /// which gives the same rays more slowly: a reference for checking the kernels.
+    /// </summary>
+    public bool EvaluateThroughCascade { get; set; }
+
+    /// <summary>
     /// S(u, v), calling the catalogue's sealed surface types directly so the JIT can inline them (the
     /// same points as <see cref="IParametricSurface.PointAt"/>; u and v come from finite view-plane
     /// coordinates, so their checks are skipped).
     /// </summary>
     private TwistablePoint SurfacePoint(double u, double v) => Surface switch
     {
+        GpcmLens lens => lens.RestPoint(u, v),
         SingleTwistSurface twisted => twisted.Cascade.Apply(twisted.Seed,
             twisted.UStart + u * (twisted.UEnd - twisted.UStart), twisted.VStart + v * (twisted.VEnd - twisted.VStart)),
         RectangularProjectionSurface rectangle => rectangle.PointAt(u, v),
@@ -158,6 +166,71 @@ public sealed class Gpcm(IParametricSurface surface, GpcmMapping mapping = GpcmM
     public override bool GetRay(Point2D pp, ViewPlane vp, out Ray ray)
     {
         var orientation = Orientation ?? throw new InvalidOperationException("The camera is not oriented: call Orient() after setting its eye, look-at point and up direction.");
+        if (RayOrigin == GpcmRayOrigin.Eye && !EvaluateThroughCascade && LensRay(pp, vp, orientation, out var direction, out var seen))
+        {
+            if (!seen)
+            {
+                ray = default;
+                return false;
+            }
+            ray = new Ray(orientation.Eye, RayDirection == GpcmRayDirection.Inward ? -direction : direction);
+            return true;
+        }
+        return CascadeRay(pp, vp, orientation, out ray);
+    }
+
+    /// <summary>
+    /// The unit direction from the eye by the lens's kernel; false when the surface has none for this
+    /// mapping. <paramref name="seen"/> is false outside the polar mapping's ellipse.
+    /// </summary>
+    private bool LensRay(Point2D pp, ViewPlane vp, GpcmOrientation orientation, out Vector3D direction, out bool seen)
+    {
+        var width = vp.HorizontalResolution * vp.PixelSize;
+        var height = vp.VerticalResolution * vp.PixelSize;
+        seen = true;
+        if (Mapping == GpcmMapping.Rectangular)
+        {
+            switch (Surface)
+            {
+                case RectangularProjectionSurface rectangle:
+                    direction = LensKernels.Rectangle(pp.x * (rectangle.Width / width), pp.y * (rectangle.Height / height), rectangle.Distance, orientation);
+                    return true;
+                case SphereLens sphere:
+                    direction = LensKernels.Sphere(pp.x * (2 * sphere.MaxAzimuth / width), pp.y * (2 * sphere.MaxElevation / height), orientation);
+                    return true;
+                case CylinderLens cylinder:
+                    direction = LensKernels.Ring(pp.x * (2 * cylinder.MaxAzimuth / width), pp.y * (cylinder.Height / height), 1, orientation);
+                    return true;
+                case ConeLens cone:
+                    var along = pp.y * (cone.Slant / height);
+                    direction = LensKernels.Ring(pp.x * (2 * cone.MaxAzimuth / width), along * cone.CosTilt, 1 - along * cone.SinTilt, orientation);
+                    return true;
+            }
+        }
+        else if (Surface is CapLens cap)
+        {
+            // The polar angle's cosine and sine are the image point's x/r and y/r: no atan2 to undo.
+            var nx = 2 * pp.x / width;
+            var ny = 2 * pp.y / height;
+            var r = Math.Sqrt(nx * nx + ny * ny);
+            if (r > 1)
+            {
+                direction = default;
+                seen = false;
+                return true;
+            }
+            direction = r > 0
+                ? LensKernels.Cap(nx / r, ny / r, r * cap.MaxAngleFromAxis, orientation)
+                : LensKernels.Cap(1, 0, 0, orientation);
+            return true;
+        }
+        direction = default;
+        return false;
+    }
+
+    /// <summary>The general way: the surface point in the rest frame, turned into the world.</summary>
+    private bool CascadeRay(Point2D pp, ViewPlane vp, GpcmOrientation orientation, out Ray ray)
+    {
         double u, v;
         if (Mapping == GpcmMapping.Rectangular)
             (u, v) = RectangularMap(pp, vp);

@@ -53,7 +53,7 @@ public class Gpcm_ConeAndCuttingSurface
     {
         // A square image for a full turn would ask for a slant of 2π, past the apex at the default tilt.
         var square = new ViewPlane { HorizontalResolution = 20, VerticalResolution = 20 };
-        var cone = (Twister.SingleTwistSurface)RayTracer.Viewing.Gpcm.Conic(360, square).Surface;
+        var cone = (ConeLens)RayTracer.Viewing.Gpcm.Conic(360, square).Surface;
         var top = cone.PointAt(0.5, 1);
         var bottom = cone.PointAt(0.5, 0);
         Assert.Equal(0.2, -top.z, 1e-12);
