@@ -19,3 +19,7 @@ rt gpcm-spherical -o "$out/spherical-90.png" --camera spherical:90 --width 480 -
 for degrees in 360 180 90; do
   rt gpcm-fisheye -o "$out/fisheye-$degrees.png" --camera "fisheye:$degrees"
 done
+# The "(a) layout and orientation" panels: each camera's surface drawn where the camera stands.
+for kind in rectangular cylindrical conic spherical fisheye; do
+  rt "gpcm-$kind-layout" -o "$out/$kind-layout.png"
+done

@@ -125,6 +125,13 @@ public sealed class Gpcm(IParametricSurface surface, GpcmMapping mapping = GpcmM
 
     public override void Aim() => Orient();
 
+    /// <summary>
+    /// The projection surface where the camera stands (scaled by <see cref="SurfaceScale"/>, turned and
+    /// moved to the eye): where rays from the surface start, and what a scene draws to show the camera.
+    /// </summary>
+    public IParametricSurface PlacedSurface() =>
+        new GpcmPlacedSurface(Surface, Orientation ?? throw new InvalidOperationException("The camera is not oriented: call Orient() first."), _surfaceScale);
+
     /// <summary>The surface parameters of view-plane point <paramref name="pp"/>.</summary>
     public static (double u, double v) RectangularMap(Point2D pp, ViewPlane vp) =>
         (pp.x / (vp.HorizontalResolution * vp.PixelSize) + 0.5, pp.y / (vp.VerticalResolution * vp.PixelSize) + 0.5);
