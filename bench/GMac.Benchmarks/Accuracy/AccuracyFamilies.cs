@@ -12,6 +12,9 @@ public static class AccuracyFamilies
 {
     public const double Offset = 1e5;
 
+    /// <summary>The part that the vectors of the Gram–Schmidt family "common-part" share.</summary>
+    public const double CommonPart = 1e4;
+
     public static IReadOnlyList<InputFamily> For(IGaKernel kernel)
     {
         var subject = kernel as IAccuracySubject
@@ -26,10 +29,19 @@ public static class AccuracyFamilies
                     t with { C = new((t.A.x + t.B.x) / 2 + 1e-9 * Signed(r), (t.A.y + t.B.y) / 2 + 1e-9 * Signed(r)) }),
             ],
             "Circ3" => [From<Vec3>(subject, "large", "coordinates near 1e4", (p, _) => Scale(p, 1e4))],
-            "GramSchmidtContraction" or "GramSchmidtRejection" =>
+            "GramSchmidtContraction" =>
             [
                 From<Vec3Triple>(subject, "near-dependent", "third vector 1e-7 off the plane of the first two", (v, r) =>
                     v with { C = Add(Add(Scale(v.A, 0.5), Scale(v.B, 0.5)), Scale(RandomVec(r), 1e-7)) }),
+            ],
+            "GramSchmidtRejection" =>
+            [
+                From<Vec3Triple>(subject, "near-dependent", "third vector 1e-7 off the plane of the first two", (v, r) =>
+                    v with { C = Add(Add(Scale(v.A, 0.5), Scale(v.B, 0.5)), Scale(RandomVec(r), 1e-7)) }),
+                // nearly parallel vectors whose third lies close to the plane of the first two: the
+                // textbook w3 from v1 × v2 loses digits here that w3 from w1 ∧ w2 keeps
+                From<Vec3Triple>(subject, "common-part", "the three vectors plus (1e4, 1e4, 1e4)", (v, _) =>
+                    new() { A = Add(v.A, CommonPart), B = Add(v.B, CommonPart), C = Add(v.C, CommonPart) }),
             ],
             "RotorToMatrix" => [From<Rotor3>(subject, "near-identity", "rotation by about 1e-6 rad", (_, r) => Unit(new Rotor3(1, 1e-6 * Signed(r), 1e-6 * Signed(r), 1e-6 * Signed(r))))],
             "JuliaStep3" or "JuliaStep5" => [From<Vec2Pair>(subject, "large", "point of size 1e3", (j, _) => j with { X = new(j.X.x * 1e3, j.X.y * 1e3) })],

@@ -29,11 +29,11 @@ public class GaApplicationBenchmarks
     }
 
     [Benchmark]
-    public void Generated() => _kernel.Run(Variant.Generated);
+    public void Generated() => _kernel.Time(Variant.Generated);
 
     [Benchmark]
-    public void Direct() => _kernel.Run(Variant.Direct);
+    public void Direct() => _kernel.Time(Variant.Direct);
 
     [Benchmark(Baseline = true)]
-    public void Hand() => _kernel.Run(Variant.Hand);
+    public void Hand() => _kernel.Time(Variant.Hand);
 }

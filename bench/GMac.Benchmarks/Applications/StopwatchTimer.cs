@@ -13,7 +13,7 @@ public sealed class StopwatchTimer(int rounds, TimeSpan roundTime)
     {
         double Time(Variant v)
         {
-            kernel.Run(v); // JIT and caches
+            kernel.Time(v); // JIT and caches
             var best = double.MaxValue;
             for (var r = 0; r < rounds; r++)
             {
@@ -21,7 +21,7 @@ public sealed class StopwatchTimer(int rounds, TimeSpan roundTime)
                 var watch = Stopwatch.StartNew();
                 do
                 {
-                    kernel.Run(v);
+                    kernel.Time(v);
                     batches++;
                 } while (watch.Elapsed < roundTime);
                 best = Math.Min(best, watch.Elapsed.TotalNanoseconds / ((double)batches * kernel.Count));

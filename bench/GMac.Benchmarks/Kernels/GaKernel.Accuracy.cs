@@ -16,7 +16,7 @@ public abstract partial class GaKernel<TIn, TOut> : IAccuracySubject
     {
         ArgumentOutOfRangeException.ThrowIfZero(inputs.Count);
         _inputs = inputs.Select(i => (TIn)i).ToArray();
-        foreach (var v in Enum.GetValues<Variant>()) _outputs[v] = new TOut[_inputs.Length];
+        AllocateOutputs();
     }
 
     public object Input(int index) => _inputs[index];

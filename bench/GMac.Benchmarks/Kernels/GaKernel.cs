@@ -2,12 +2,15 @@ namespace GMac.Benchmarks.Kernels;
 
 /// <summary>
 /// Batch plumbing shared by the kernels. Each kernel loops over the batch itself so that its
-/// per-item methods can be inlined: one virtual call per batch, none per item.
+/// per-item methods can be inlined: one virtual call per batch, none per item. Timed runs of all
+/// variants read the same input array and write the same output array, so no variant gains or
+/// loses by where its arrays happen to lie (cache sets, loads that alias earlier stores modulo 4 KiB).
 /// </summary>
 public abstract partial class GaKernel<TIn, TOut> : IGaKernel where TIn : struct where TOut : struct
 {
     private TIn[] _inputs = [];
     private readonly Dictionary<Variant, TOut[]> _outputs = [];
+    private TOut[] _timed = [];
 
     public abstract string MacroName { get; }
     public abstract string Source { get; }
@@ -20,12 +23,21 @@ public abstract partial class GaKernel<TIn, TOut> : IGaKernel where TIn : struct
         var random = new Random(seed);
         _inputs = new TIn[count];
         for (var i = 0; i < count; i++) _inputs[i] = CreateInput(random);
-        foreach (var v in Enum.GetValues<Variant>()) _outputs[v] = new TOut[count];
+        AllocateOutputs();
     }
 
-    public void Run(Variant variant)
+    public void Run(Variant variant) => Run(variant, _outputs[variant]);
+
+    public void Time(Variant variant) => Run(variant, _timed);
+
+    private void AllocateOutputs()
     {
-        var outputs = _outputs[variant];
+        foreach (var v in Enum.GetValues<Variant>()) _outputs[v] = new TOut[_inputs.Length];
+        _timed = new TOut[_inputs.Length];
+    }
+
+    private void Run(Variant variant, TOut[] outputs)
+    {
         switch (variant)
         {
             case Variant.Generated: RunGenerated(_inputs, outputs); break;

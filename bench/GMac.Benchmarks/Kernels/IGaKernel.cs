@@ -17,8 +17,14 @@ public interface IGaKernel
     /// <summary>Fills the batch with random inputs fixed by <paramref name="seed"/>.</summary>
     void Setup(int count, int seed);
 
-    /// <summary>Runs one variant over the whole batch.</summary>
+    /// <summary>Runs one variant over the whole batch and keeps its outputs for <see cref="Output"/>.</summary>
     void Run(Variant variant);
+
+    /// <summary>
+    /// Runs one variant over the whole batch for timing: every variant writes into the same output
+    /// array, so all of them touch the same memory. <see cref="Output"/> does not see these runs.
+    /// </summary>
+    void Time(Variant variant);
 
     /// <summary>The output coefficients one variant wrote for item <paramref name="index"/> in its last run.</summary>
     IReadOnlyList<double> Output(Variant variant, int index);

@@ -58,14 +58,11 @@ public sealed class SkewLinesClosestPointsKernel : GaKernel<LinePair, LineParame
         double tmp4 = l.D2.z * l.D1.x - l.D1.z * l.D2.x;
         double tmp5 = l.D2.z * l.D1.y - l.D2.y * l.D1.z;
         double tmp6 = 1.0 / (tmp3 * tmp3 + tmp4 * tmp4 + tmp5 * tmp5);
-        double tmp7 = -(tmp3 * tmp6);
-        double tmp8 = -(tmp4 * tmp6);
-        double tmp9 = -(tmp5 * tmp6);
-        double tmp10 = tmp9 * tmp2 - tmp0 * tmp7;
-        double tmp11 = tmp2 * tmp8 + tmp1 * tmp7;
-        double tmp12 = tmp9 * tmp1 + tmp0 * tmp8;
-        t.T1 = l.D2.y * tmp10 + l.D2.x * tmp11 - l.D2.z * tmp12;
-        t.T2 = l.D1.x * tmp11 + l.D1.y * tmp10 - l.D1.z * tmp12;
+        double tmp7 = tmp0 * tmp3 - tmp5 * tmp2;
+        double tmp8 = tmp2 * tmp4 + tmp1 * tmp3;
+        double tmp9 = tmp5 * tmp1 + tmp0 * tmp4;
+        t.T1 = tmp6 * (l.D2.y * tmp7 + l.D2.z * tmp9 - l.D2.x * tmp8);
+        t.T2 = tmp6 * (l.D1.y * tmp7 + l.D1.z * tmp9 - l.D1.x * tmp8);
         #endregion
     }
 

@@ -32,6 +32,7 @@ public sealed class Optimizer
         }
         block = strength.Run(block); // CSE may expose repeated denominators
         block = new SquareRootReciprocalPass().Run(new ConstantAbsorptionPass().Run(block));
+        block = new ReciprocalDeferralPass().Run(block);
         block = new SineCosinePairingPass().Run(block); // last: later passes could inline the calls again
         return reuseTemporaries ? new TemporaryReusePass().Run(block) : block;
     }
