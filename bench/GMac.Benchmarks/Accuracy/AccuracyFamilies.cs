@@ -56,7 +56,7 @@ public static class AccuracyFamilies
                 From<LinePair>(subject, "near-parallel", "directions 1e-6 apart", (l, r) => l with { D2 = Add(l.D1, Scale(RandomVec(r), 1e-6)) }),
             ],
             "NormalToVectors" => [From<Vec3Pair>(subject, "near-parallel", "vectors 1e-8 apart", (x, r) => x with { V = Add(x.U, Scale(RandomVec(r), 1e-8)) })],
-            "SphereThroughPoints" =>
+            "SphereThroughPoints" or "SphereCentreAndRadiusThroughPoints" =>
             [
                 From<Vec3Quad>(subject, "offset", "sphere moved by 1e5 along each axis", (q, _) => new() { P1 = Add(q.P1, Offset), P2 = Add(q.P2, Offset), P3 = Add(q.P3, Offset), P4 = Add(q.P4, Offset) }),
                 From<Vec3Quad>(subject, "near-coplanar", "fourth point 1e-6 off the plane of the others", (q, r) =>

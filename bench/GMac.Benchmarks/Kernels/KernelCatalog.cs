@@ -20,6 +20,7 @@ public static class KernelCatalog
         () => new ApplyTwistToPoint3DKernel(),
         () => new SquaredDistanceKernel(),
         () => new RotateAboutAxisThroughPoint3DKernel(),
+        () => new SphereCentreAndRadiusThroughPointsKernel(),
     ];
 
     public static IReadOnlyList<string> Names { get; } = Factories.Select(f => f().MacroName).ToArray();

@@ -15,6 +15,7 @@ public sealed partial class Multivector<T>
     public Multivector<T> Product(ProductKind kind, Multivector<T> other)
     {
         RequireSameFrame(this, other, "multiply");
+        if (_dense is not null) return DenseProduct(kind, other._dense!);
         if (IsZero || other.IsZero) return Zero(Frame);
         if (Frame.SignatureProducts is { } signature && kind == ProductKind.Scalar) return ScalarProduct(signature, other);
         CheckSize(other);

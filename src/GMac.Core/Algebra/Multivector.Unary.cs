@@ -9,6 +9,7 @@ public sealed partial class Multivector<T>
     /// <summary>Negates the grades whose bit is set in <paramref name="negatedGrades"/>.</summary>
     private Multivector<T> SignByGrade(int negatedGrades)
     {
+        if (_dense is not null) return DenseByGrade(-1, negatedGrades);
         var cs = new T[_coefficients.Length];
         for (var i = 0; i < cs.Length; i++)
             cs[i] = (negatedGrades & (1 << BitOperations.PopCount((uint)_ids[i]))) == 0 ? _coefficients[i] : -_coefficients[i];
@@ -40,6 +41,7 @@ public sealed partial class Multivector<T>
     /// <summary>⟨A⟩ₖ, the grade-k part.</summary>
     public Multivector<T> Grade(int k)
     {
+        if (_dense is not null) return DenseByGrade((uint)k < 32 ? 1 << k : 0, 0);
         var count = 0;
         foreach (var id in _ids)
             if (BitOperations.PopCount((uint)id) == k) count++;
@@ -57,6 +59,7 @@ public sealed partial class Multivector<T>
 
     public Multivector<T> SelectGrades(Func<int, bool> keep)
     {
+        if (_dense is not null) return DenseByGrade(GradeMask(keep), 0);
         var ids = new int[_ids.Length];
         var cs = new T[_ids.Length];
         var k = 0;
@@ -67,6 +70,15 @@ public sealed partial class Multivector<T>
             cs[k++] = _coefficients[i];
         }
         return Trimmed(Frame, ids, cs, k);
+    }
+
+    /// <summary>The grades 0..n of this frame that <paramref name="keep"/> accepts, as a bit mask.</summary>
+    private int GradeMask(Func<int, bool> keep)
+    {
+        var mask = 0;
+        for (var k = 0; k <= Frame.Dimension; k++)
+            if (keep(k)) mask |= 1 << k;
+        return mask;
     }
 
     // ---- norms ---------------------------------------------------------------------------------
@@ -181,7 +193,7 @@ public sealed partial class Multivector<T>
     private int SignFromMetric()
     {
         var support = 0;
-        foreach (var id in _ids) support |= id;
+        foreach (var id in Ids()) support |= id;
         var indices = new BasisBlade(support).BasisVectorIndices().ToArray();
         var sub = new Numerics.Rational[indices.Length, indices.Length];
         for (var i = 0; i < indices.Length; i++)
@@ -200,6 +212,7 @@ public sealed partial class Multivector<T>
     public bool Equals(Multivector<T>? other)
     {
         if (other is null || !ReferenceEquals(Frame, other.Frame) || other._ids.Length != _ids.Length) return false;
+        if (_dense is not null) return DenseEquals(_dense, other._dense!);
         for (var i = 0; i < _ids.Length; i++)
             if (_ids[i] != other._ids[i] || !_coefficients[i].Equals(other._coefficients[i])) return false;
         return true;

@@ -6,17 +6,29 @@ namespace GMac.Core.Algebra;
 
 /// <summary>
 /// An immutable multivector of a frame, generic over its scalar type: <c>double</c> for numbers,
-/// the symbolic <c>Scalar</c> for code generation. Terms are kept sparse, sorted by blade id,
-/// with exact zeros dropped: a conformal point has 5 of 32 coefficients, and products loop over
-/// the terms present only. Products add into a dense per-thread buffer indexed by blade and read
-/// signs from per-frame tables (see <see cref="Accumulator"/> and the product partial), so an
-/// operation allocates its result and nothing else. Every operation is written once for both domains.
+/// the symbolic <c>Scalar</c> for code generation. Two storage forms, fixed by the scalar type
+/// and the frame:
+/// <list type="bullet">
+/// <item>Dense: value-type scalars (double, float) in frames of at most 8 dimensions keep one
+/// coefficient per blade, 2^n in blade-id order, zeros included. A product is two loops over
+/// the blades with the sign or blade-product table of the frame, adding straight into the
+/// result's array: no sorting, no look-ups by id, no allocation beyond the result.</item>
+/// <item>Sparse: symbolic scalars, and larger frames, keep the non-zero terms sorted by blade id.
+/// A conformal point has 5 of 32 symbolic coefficients, and a product loops over the terms
+/// present only, adding into a dense per-thread buffer (see <see cref="Accumulator"/>).</item>
+/// </list>
+/// Either way exact zeros are not terms: <see cref="Terms"/> and <see cref="TermCount"/> see only
+/// non-zero coefficients. Every operation is written once for both scalar domains.
 /// </summary>
 public sealed partial class Multivector<T>
     where T : INumberBase<T>, IRootFunctions<T>, ITrigonometricFunctions<T>, IHyperbolicFunctions<T>
 {
+    // The sparse form; both empty in the dense form.
     private readonly int[] _ids;
     private readonly T[] _coefficients;
+
+    // The dense form: one coefficient per blade id; null in the sparse form.
+    private readonly T[]? _dense;
 
     public Frame Frame { get; }
 
@@ -27,9 +39,17 @@ public sealed partial class Multivector<T>
         _coefficients = coefficients;
     }
 
+    private Multivector(Frame frame, T[] dense)
+    {
+        Frame = frame;
+        _ids = [];
+        _coefficients = [];
+        _dense = dense;
+    }
+
     // ---- construction ----------------------------------------------------------------------
 
-    public static Multivector<T> Zero(Frame frame) => new(frame, [], []);
+    public static Multivector<T> Zero(Frame frame) => IsDenseFrame(frame) ? new(frame, new T[frame.BladeCount]) : new(frame, [], []);
 
     public static Multivector<T> FromScalar(Frame frame, T value) => Basis(frame, BasisBlade.Scalar, value);
 
@@ -38,6 +58,12 @@ public sealed partial class Multivector<T>
     public static Multivector<T> Basis(Frame frame, BasisBlade blade, T coefficient)
     {
         frame.CheckBlade(blade);
+        if (IsDenseFrame(frame))
+        {
+            var dense = new T[frame.BladeCount];
+            dense[blade.Id] = coefficient;
+            return new Multivector<T>(frame, dense);
+        }
         return T.IsZero(coefficient) ? Zero(frame) : new Multivector<T>(frame, [blade.Id], [coefficient]);
     }
 
@@ -53,6 +79,12 @@ public sealed partial class Multivector<T>
     {
         if (coefficients.Length != frame.Dimension)
             throw new AlgebraException(frame.Name, $"a vector needs {frame.Dimension} coefficients, not {coefficients.Length}.");
+        if (IsDenseFrame(frame))
+        {
+            var dense = new T[frame.BladeCount];
+            for (var i = 0; i < coefficients.Length; i++) dense[1 << i] = coefficients[i];
+            return new Multivector<T>(frame, dense);
+        }
         var count = 0;
         foreach (var c in coefficients)
             if (!T.IsZero(c)) count++;
@@ -70,6 +102,16 @@ public sealed partial class Multivector<T>
     /// <summary>A multivector from (blade, coefficient) pairs; repeated blades are summed.</summary>
     public static Multivector<T> FromTerms(Frame frame, IEnumerable<(BasisBlade Blade, T Coefficient)> terms)
     {
+        if (IsDenseFrame(frame))
+        {
+            var dense = new T[frame.BladeCount];
+            foreach (var (blade, c) in terms)
+            {
+                frame.CheckBlade(blade);
+                dense[blade.Id] += c;
+            }
+            return new Multivector<T>(frame, dense);
+        }
         var acc = Accumulator.Rent(frame);
         try
         {
@@ -88,13 +130,19 @@ public sealed partial class Multivector<T>
 
     // ---- reading ---------------------------------------------------------------------------
 
-    public int TermCount => _ids.Length;
-    public bool IsZero => _ids.Length == 0;
+    public int TermCount => _dense is null ? _ids.Length : DenseTermCount(_dense);
+    public bool IsZero => _dense is null ? _ids.Length == 0 : DenseTermCount(_dense) == 0;
 
     public IEnumerable<(BasisBlade Blade, T Coefficient)> Terms
     {
         get
         {
+            if (_dense is not null)
+            {
+                for (var id = 0; id < _dense.Length; id++)
+                    if (!T.IsZero(_dense[id])) yield return (new BasisBlade(id), _dense[id]);
+                yield break;
+            }
             for (var i = 0; i < _ids.Length; i++) yield return (new BasisBlade(_ids[i]), _coefficients[i]);
         }
     }
@@ -103,6 +151,7 @@ public sealed partial class Multivector<T>
     {
         get
         {
+            if (_dense is not null) return (uint)blade.Id < (uint)_dense.Length && !T.IsZero(_dense[blade.Id]) ? _dense[blade.Id] : T.Zero;
             var i = Array.BinarySearch(_ids, blade.Id);
             return i >= 0 ? _coefficients[i] : T.Zero;
         }
@@ -127,14 +176,14 @@ public sealed partial class Multivector<T>
         get
         {
             var mask = 0;
-            foreach (var id in _ids) mask |= 1 << BitOperations.PopCount((uint)id);
+            foreach (var id in Ids()) mask |= 1 << BitOperations.PopCount((uint)id);
             var grades = new int[BitOperations.PopCount((uint)mask)];
             for (var k = 0; mask != 0; mask &= mask - 1) grades[k++] = BitOperations.TrailingZeroCount(mask);
             return grades;
         }
     }
 
-    public bool IsScalar => _ids.Length == 0 || (_ids.Length == 1 && _ids[0] == 0);
+    public bool IsScalar => _dense is null ? _ids.Length == 0 || (_ids.Length == 1 && _ids[0] == 0) : DenseTermCount(_dense, 1) == 0;
 
     // ---- linear structure ------------------------------------------------------------------
 
@@ -151,6 +200,7 @@ public sealed partial class Multivector<T>
     public Multivector<T> Scale(T s)
     {
         if (T.IsZero(s)) return Zero(Frame);
+        if (_dense is not null) return DenseMap(c => s * c);
         var ids = new int[_ids.Length];
         var cs = new T[_ids.Length];
         var k = 0;
@@ -169,6 +219,7 @@ public sealed partial class Multivector<T>
     private static Multivector<T> Combine(Multivector<T> a, Multivector<T> b, bool subtract)
     {
         RequireSameFrame(a, b, subtract ? "subtract" : "add");
+        if (a._dense is not null) return DenseCombine(a, b._dense!, subtract);
         var (x, y) = (a._ids, b._ids);
         var ids = new int[x.Length + y.Length];
         var cs = new T[ids.Length];
@@ -207,6 +258,7 @@ public sealed partial class Multivector<T>
     /// <summary>Applies f to every coefficient, dropping those that become zero.</summary>
     public Multivector<T> MapCoefficients(Func<T, T> f)
     {
+        if (_dense is not null) return DenseMap(f);
         var ids = new int[_ids.Length];
         var cs = new T[_ids.Length];
         var k = 0;
@@ -225,12 +277,22 @@ public sealed partial class Multivector<T>
 
     /// <summary>The same coefficients carried to another scalar type (e.g. symbolic to numeric).</summary>
     public Multivector<TOther> Convert<TOther>(Func<T, TOther> convert)
-        where TOther : INumberBase<TOther>, IRootFunctions<TOther>, ITrigonometricFunctions<TOther>, IHyperbolicFunctions<TOther> =>
-        Multivector<TOther>.FromSortedTerms(Frame, _ids, Array.ConvertAll(_coefficients, c => convert(c)));
+        where TOther : INumberBase<TOther>, IRootFunctions<TOther>, ITrigonometricFunctions<TOther>, IHyperbolicFunctions<TOther>
+    {
+        var ids = _dense is null ? _ids : Ids().ToArray();
+        var cs = _dense is null ? _coefficients : Array.ConvertAll(ids, id => _dense[id]);
+        return Multivector<TOther>.FromSortedTerms(Frame, ids, Array.ConvertAll(cs, c => convert(c)));
+    }
 
     /// <summary>Terms already sorted by distinct blade ids; zero coefficients are dropped.</summary>
     internal static Multivector<T> FromSortedTerms(Frame frame, int[] ids, T[] coefficients)
     {
+        if (IsDenseFrame(frame))
+        {
+            var dense = new T[frame.BladeCount];
+            for (var i = 0; i < ids.Length; i++) dense[ids[i]] = coefficients[i];
+            return new Multivector<T>(frame, dense);
+        }
         var keptIds = new int[ids.Length];
         var k = 0;
         for (var i = 0; i < ids.Length; i++)
@@ -254,13 +316,13 @@ public sealed partial class Multivector<T>
     {
         if (IsZero) return "0";
         var sb = new StringBuilder();
-        for (var i = 0; i < _ids.Length; i++)
+        foreach (var (blade, coefficient) in Terms)
         {
-            if (i > 0) sb.Append(" + ");
-            var c = _coefficients[i].ToString();
+            if (sb.Length > 0) sb.Append(" + ");
+            var c = coefficient.ToString();
             var needsParens = c is not null && (c.Contains('+') || c.IndexOf('-', 1) > 0);
             sb.Append(needsParens ? $"({c})" : c);
-            if (_ids[i] != 0) sb.Append(' ').Append(Frame.BladeName(new BasisBlade(_ids[i])));
+            if (blade.Id != 0) sb.Append(' ').Append(Frame.BladeName(blade));
         }
         return sb.ToString();
     }

@@ -62,6 +62,20 @@ internal sealed class ProductTable<T> where T : INumberBase<T>
         return _flat = new Flat(start, blades.ToArray(), coefficients.ToArray()); // a benign race, as in Get
     }
 
+    /// <summary>
+    /// The flat form, building every entry first: for numeric products, which meet every pair of
+    /// blades anyway. Null for frames above 64 blades.
+    /// </summary>
+    public Flat? Completed()
+    {
+        if (_flat is not null || _frame.BladeCount > FlatLimit) return _flat;
+        var n = _frame.BladeCount;
+        for (var a = 0; a < n; a++)
+        for (var b = 0; b < n; b++)
+            Get(a, b);
+        return Flattened();
+    }
+
     internal sealed class Entry(int[] blades, T[] coefficients, bool[] isOne)
     {
         public readonly int[] Blades = blades;

@@ -51,6 +51,41 @@ public class AccuracyHarness_Goal
     }
 
     [Fact]
+    public void Sphere_radius_far_out_keeps_the_hand_accuracy_that_reading_the_dual_sphere_loses()
+    {
+        var kernel = new SphereCentreAndRadiusThroughPointsKernel();
+        var family = AccuracyFamilies.For(kernel).Single(f => f.Name == "offset");
+        var random = new Random(4);
+        ((IAccuracySubject)kernel).SetInputs(Enumerable.Range(0, 20).Select(_ => family.Create(random)).ToArray());
+        kernel.Run(Variant.Generated);
+        kernel.Run(Variant.Hand);
+        var reference = new KernelReference(kernel, Generator);
+        double worstGenerated = 0, worstHand = 0, worstFromDual = 0;
+        for (var i = 0; i < kernel.Count; i++)
+        {
+            var exact = reference.Evaluate(i)!;
+            worstGenerated = Math.Max(worstGenerated, AccuracyHarness.ItemError(kernel.Output(Variant.Generated, i), exact));
+            worstHand = Math.Max(worstHand, AccuracyHarness.ItemError(kernel.Output(Variant.Hand, i), exact));
+            // The radius read back from the dual sphere ω = α (c − ½ r² ni), α = ω_no: r² = c² − 2 ω_ni / α.
+            SphereThroughPointsKernel.Generated((Vec3Quad)((IAccuracySubject)kernel).Input(i), out var omega);
+            double cx = omega.E1 / omega.No, cy = omega.E2 / omega.No, cz = omega.E3 / omega.No;
+            var fromDual = Math.Sqrt(cx * cx + cy * cy + cz * cz - 2 * omega.Ni / omega.No);
+            worstFromDual = Math.Max(worstFromDual, AccuracyHarness.ItemError([fromDual], exact));
+        }
+        Assert.True(worstFromDual > 1e-9, $"the dual sphere's radius was accurate to {worstFromDual:e2}: the family is not ill-conditioned");
+        Assert.True(worstGenerated <= 10 * Math.Max(worstHand, 1e-16), $"generated {worstGenerated:e2}, hand {worstHand:e2}");
+        Assert.True(worstGenerated < 1e-10, $"generated {worstGenerated:e2}");
+    }
+
+    [Fact]
+    public void Sphere_radius_is_generated_in_the_hand_operation_count()
+    {
+        var counter = new GeneratedOperationCounter(Generator);
+        var kernel = new SphereCentreAndRadiusThroughPointsKernel();
+        Assert.Equal(kernel.HandOperations, counter.Count(kernel));
+    }
+
+    [Fact]
     public void The_reference_writes_each_output_into_its_own_component()
     {
         var kernel = new SphereThroughPointsKernel();

@@ -4,13 +4,14 @@ namespace GMac.Cli.Tests.Build;
 
 /// <summary>
 /// A small project in a temporary folder that imports the repository's build/GMac.targets, with
-/// one C# file holding a binding point and a two-file DSL: the frame, and the macro it uses.
+/// one C# file holding a binding point and a two-file DSL: the frame, and the macros it uses
+/// (<c>Sum</c>, and <c>Third</c>, whose constant shows the scalar type of the code).
 /// </summary>
 internal sealed class SampleProject : IDisposable
 {
     private readonly TempFolder _temp = new();
 
-    public SampleProject(string kernelsText)
+    public SampleProject(string kernelsText, string extraProperties = "")
     {
         var targets = Path.Combine(SharedDsl.RepositoryRoot, "build", "GMac.targets");
         // Empty Directory.Build files stop MSBuild from importing any found above the temp folder.
@@ -23,6 +24,7 @@ internal sealed class SampleProject : IDisposable
                 <Nullable>enable</Nullable>
                 <TreatWarningsAsErrors>true</TreatWarningsAsErrors>
                 <GMacDslDirectory>$(MSBuildThisFileDirectory)dsl</GMacDslDirectory>
+                {extraProperties}
               </PropertyGroup>
               <Import Project="{targets}" />
             </Project>
@@ -42,6 +44,14 @@ internal sealed class SampleProject : IDisposable
                 outputs: { w : e3d.Vector }
                 performs:
                     w = u + v;
+            end macro
+            """);
+        _temp.Write(Path.Combine("dsl", "third.gmac"), """
+            define macro Third as
+                inputs: { u : e3d.Vector }
+                outputs: { w : e3d.Vector }
+                performs:
+                    w = (1/3) * u;
             end macro
             """);
         KernelsFile = _temp.Write("Kernels.cs", kernelsText);

@@ -1,0 +1,67 @@
+namespace GMac.Cli.Tests.Build;
+
+/// <summary>
+/// The GMacScalar property of build/GMac.targets on a real <c>dotnet build</c>: float code for a
+/// project that asks for it, double again when the property changes (the change alone must
+/// regenerate), and a clear build error for any other value.
+/// </summary>
+public sealed class MsBuildStep_ScalarProperty
+{
+    // Only the input is bound, so the generated code declares the output locals in its own scalar
+    // type; the method compiles either way. The region starts empty.
+    private const string Kernels = """
+        namespace Sample;
+
+        public static class Kernels
+        {
+            public static double Third(float ax, float ay, float az)
+            {
+                #region GMac : Third
+                //GMac.Bind("u.e1", "<ax>");
+                //GMac.Bind("u.e2", "<ay>");
+                //GMac.Bind("u.e3", "<az>");
+                #endregion
+
+                return w_e1 + w_e2 + w_e3;
+            }
+        }
+
+        """;
+
+    [Fact]
+    public void Gmac_scalar_float_writes_float_code_and_a_change_of_it_regenerates()
+    {
+        using var project = new SampleProject(Kernels, "<GMacScalar>float</GMacScalar>");
+        var (exit, output) = project.Build(restore: true);
+        Assert.True(exit == 0, output);
+        var floatCode = File.ReadAllText(project.KernelsFile);
+        Assert.Contains("float w_e1 = ", floatCode);
+        Assert.Matches(@"0\.333333\d*f", floatCode); // the exact 1/3 rounded once to a float literal
+        Assert.DoesNotContain("double w_", floatCode);
+
+        SetScalar(project, "<GMacScalar>double</GMacScalar>");
+        (exit, output) = project.Build();
+        Assert.True(exit == 0, output);
+        var doubleCode = File.ReadAllText(project.KernelsFile);
+        Assert.Contains("double w_e1 = ", doubleCode);
+        Assert.DoesNotMatch(@"\d+f\b", doubleCode);
+    }
+
+    [Fact]
+    public void Another_gmac_scalar_is_a_build_error_naming_the_property()
+    {
+        using var project = new SampleProject(Kernels, "<GMacScalar>half</GMacScalar>");
+        var (exit, output) = project.Build(restore: true);
+        Assert.NotEqual(0, exit);
+        Assert.Contains("GMacScalar is 'half'; it must be float or double", output);
+        Assert.Equal(Kernels, File.ReadAllText(project.KernelsFile));
+    }
+
+    private static void SetScalar(SampleProject project, string property)
+    {
+        var text = File.ReadAllText(project.ProjectFile);
+        var start = text.IndexOf("<GMacScalar>", StringComparison.Ordinal);
+        var end = text.IndexOf("</GMacScalar>", StringComparison.Ordinal) + "</GMacScalar>".Length;
+        File.WriteAllText(project.ProjectFile, text[..start] + property + text[end..]);
+    }
+}
