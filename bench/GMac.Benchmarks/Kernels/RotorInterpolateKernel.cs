@@ -78,28 +78,15 @@ public sealed class RotorInterpolateKernel : GaKernel<RotorPair, Rotor3>
         //GMac.Bind("r.e2^e3", "<r.x>");
         //GMac.Bind("r.e3^e1", "<r.y>");
         //GMac.Bind("r.e1^e2", "<r.z>");
-        double tmp0 = p.R2.z * p.R2.z;
-        double tmp1 = p.R2.y * p.R2.y;
-        double tmp2 = p.R2.x * p.R2.x;
-        double tmp3 = p.R2.z * p.R1.z;
-        double tmp4 = p.R2.w * p.R1.w;
-        double tmp5 = p.R2.y * p.R1.y;
-        double tmp6 = tmp3 + tmp4;
-        double tmp7 = tmp2 + tmp1;
-        double tmp8 = 1.0 - tmp0;
-        double tmp9 = tmp5 + tmp6;
-        double tmp10 = Math.Sqrt((p.R1.x * (tmp8 - 2.0 * tmp2 - tmp1) - 2.0 * tmp9 * p.R2.x) * p.R1.x + p.R1.y * ((tmp8 - 2.0 * tmp1 - tmp2) * p.R1.y - 2.0 * p.R2.y * tmp6) + (p.R1.z * (1.0 - 2.0 * tmp0 - tmp7) - 2.0 * p.R2.z * tmp4) * p.R1.z + tmp0 + tmp7);
-        double tmp11 = 1.0 / tmp10;
-        double tmp12 = p.R2.x * p.R1.x;
-        double tmp13 = p.Alpha * Math.Atan2(tmp10, Math.Abs(tmp12 + tmp9));
-        var (tmp14, tmp15) = Math.SinCos(tmp13);
-        double tmp16 = tmp11 * (tmp12 + tmp5 + tmp3);
-        r.w = tmp14 * (p.R2.w * tmp11 * (p.R1.x * p.R1.x + p.R1.y * p.R1.y + p.R1.z * p.R1.z) - p.R1.w * tmp16) + p.R1.w * tmp15;
-        double tmp17 = (-(tmp11 * tmp4) - tmp16) * tmp14 + tmp15;
-        double tmp18 = tmp11 * tmp14;
-        r.x = p.R1.x * tmp17 + p.R2.x * tmp18;
-        r.y = p.R1.y * tmp17 + p.R2.y * tmp18;
-        r.z = p.R1.z * tmp17 + p.R2.z * tmp18;
+        double tmp0 = p.R1.w * p.R2.w + p.R1.x * p.R2.x + p.R1.y * p.R2.y + p.R1.z * p.R2.z;
+        double tmp1 = Math.Sqrt(1.0 - tmp0 * tmp0);
+        double tmp2 = p.Alpha * Math.Atan2(tmp1, Math.Abs(tmp0));
+        double tmp3 = Math.Sin(tmp2) / tmp1;
+        double tmp4 = Math.Cos(tmp2) - tmp0 * tmp3;
+        r.w = p.R1.w * tmp4 + p.R2.w * tmp3;
+        r.x = p.R1.x * tmp4 + p.R2.x * tmp3;
+        r.y = p.R1.y * tmp4 + p.R2.y * tmp3;
+        r.z = p.R1.z * tmp4 + p.R2.z * tmp3;
         #endregion
     }
 
