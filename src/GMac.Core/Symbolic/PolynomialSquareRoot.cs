@@ -1,5 +1,7 @@
 using GMac.Core.Numerics;
 
+using System.Runtime.CompilerServices;
+
 namespace GMac.Core.Symbolic;
 
 /// <summary>
@@ -11,6 +13,9 @@ internal static class PolynomialSquareRoot
     // Beyond this the candidate's square costs more than the rule is worth.
     private const int MaxTerms = 256;
 
+    // The simplifier rebuilds the same roots in every round; scalars are interned, so one answer per scalar.
+    private static readonly ConditionalWeakTable<Scalar, Scalar?> Known = new();
+
     /// <summary>
     /// The terms of p whose coefficient is a positive rational square and whose powers are all even
     /// are the candidate root's squares; the cross term with the first of them fixes each sign.
@@ -18,14 +23,19 @@ internal static class PolynomialSquareRoot
     /// </summary>
     public static bool TryRoot(Scalar p, out Scalar root)
     {
-        root = Scalar.Zero;
+        root = Known.GetValue(p, Find) ?? Scalar.Zero;
+        return !Scalar.IsZero(root);
+    }
+
+    private static Scalar? Find(Scalar p)
+    {
         var terms = p.TermArray;
-        if (terms.Length < 3 || terms.Length > MaxTerms) return false;
+        if (terms.Length < 3 || terms.Length > MaxTerms) return null;
         var halves = new List<Term>();
         foreach (var term in terms)
             if (HalfOf(term) is { } half) halves.Add(half);
         var k = halves.Count;
-        if (k < 2 || (long)k * (k + 1) / 2 < terms.Length) return false;
+        if (k < 2 || (long)k * (k + 1) / 2 < terms.Length) return null;
 
         var byMonomial = new Dictionary<Monomial, Rational>(terms.Length);
         foreach (var term in terms) byMonomial[term.Monomial] = term.Coefficient;
@@ -34,13 +44,11 @@ internal static class PolynomialSquareRoot
         for (var i = 1; i < k; i++)
         {
             var cross = (first * Scalar.FromTerm(Rational.One, halves[i].Monomial)).TermArray[0].Monomial;
-            if (!byMonomial.TryGetValue(cross, out var coefficient) || coefficient.IsZero) return false;
+            if (!byMonomial.TryGetValue(cross, out var coefficient) || coefficient.IsZero) return null;
             rootTerms.Add(coefficient.Sign < 0 ? halves[i] with { Coefficient = -halves[i].Coefficient } : halves[i]);
         }
         var candidate = Scalar.FromTerms(rootTerms);
-        if (candidate * candidate != p) return false;
-        root = candidate;
-        return true;
+        return candidate * candidate == p ? candidate : null;
     }
 
     private static Term? HalfOf(Term term)
