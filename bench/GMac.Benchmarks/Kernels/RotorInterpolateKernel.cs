@@ -78,31 +78,15 @@ public sealed class RotorInterpolateKernel : GaKernel<RotorPair, Rotor3>
         //GMac.Bind("r.e2^e3", "<r.x>");
         //GMac.Bind("r.e3^e1", "<r.y>");
         //GMac.Bind("r.e1^e2", "<r.z>");
-        double tmp0 = p.R2.z * p.R1.z;
-        double tmp1 = p.R2.w * p.R1.w;
-        double tmp2 = 2.0 * p.R2.x;
-        double tmp3 = tmp0 + tmp1;
-        double tmp4 = p.R2.y * p.R1.y;
-        double tmp5 = p.R2.y * p.R2.y;
-        double tmp6 = p.R2.x * p.R2.x;
-        double tmp7 = tmp6 + tmp5;
-        double tmp8 = p.R2.z * p.R2.z;
-        double tmp9 = tmp8 - 1.0;
-        double tmp10 = p.R1.y * (p.R1.y * (tmp6 + 2.0 * tmp5 + tmp9) + 2.0 * p.R2.y * tmp3) + ((p.R2.x * tmp2 + tmp5 + tmp9) * p.R1.x + (tmp4 + tmp3) * tmp2) * p.R1.x + (2.0 * p.R2.z * tmp1 + p.R1.z * (2.0 * tmp8 + tmp7 - 1.0)) * p.R1.z - tmp7;
-        double tmp11 = Math.Sqrt(tmp8 - tmp10);
-        double tmp12 = p.Alpha * Math.Atan2(tmp11 / Math.Sqrt(tmp10 - tmp9), 1.0);
-        double tmp13 = Math.Abs(tmp12);
-        double tmp14 = 1.0 / (tmp11 * tmp13);
-        var (tmp18, tmp15) = Math.SinCos(tmp13);
-        double tmp16 = p.R1.x * tmp14;
-        double tmp17 = tmp14 * (tmp0 + tmp4) + p.R2.x * tmp16;
-        double tmp19 = tmp12 * tmp18;
-        r.w = (p.R2.w * (tmp14 * (p.R1.y * p.R1.y + p.R1.z * p.R1.z) + p.R1.x * tmp16) - p.R1.w * tmp17) * tmp19 + p.R1.w * tmp15;
-        double tmp20 = -((-(tmp14 * tmp1) - tmp17) * tmp19) - tmp15;
-        double tmp21 = tmp14 * tmp19;
-        r.x = p.R2.x * tmp21 - p.R1.x * tmp20;
-        r.y = p.R2.y * tmp21 - p.R1.y * tmp20;
-        r.z = p.R2.z * tmp21 - p.R1.z * tmp20;
+        double tmp0 = p.R1.w * p.R2.w + p.R1.x * p.R2.x + p.R1.y * p.R2.y + p.R1.z * p.R2.z;
+        double tmp1 = Math.Sqrt(1.0 - tmp0 * tmp0);
+        double tmp2 = p.Alpha * Math.Atan2(tmp1, Math.Abs(tmp0));
+        double tmp3 = Math.Sin(tmp2) / tmp1;
+        double tmp4 = Math.Cos(tmp2) - tmp0 * tmp3;
+        r.w = p.R1.w * tmp4 + p.R2.w * tmp3;
+        r.x = p.R1.x * tmp4 + p.R2.x * tmp3;
+        r.y = p.R1.y * tmp4 + p.R2.y * tmp3;
+        r.z = p.R1.z * tmp4 + p.R2.z * tmp3;
         #endregion
     }
 

@@ -92,7 +92,11 @@ public static class CodeGenerator
             }
         }
         var verbatimCount = verbatim.Count;
-        if (verbatimCount == 0) SymbolicInliner.Inline(assignments, simplify);
+        if (verbatimCount == 0)
+        {
+            SymbolicInliner.Inline(assignments, simplify);
+            Rewrites.NormComplement.Apply(assignments, simplify);
+        }
 
         var known = new HashSet<string>(inputs, StringComparer.Ordinal);
         var spread = Rewrites.AtomSpread.Of(assignments.Where(a => a.IsOutput).Select(a => a.Value));

@@ -21,7 +21,7 @@ public sealed class RuleBasedCas : ICasAdapter
 {
     private const int MaxRounds = 8;
 
-    public string Name => "rules-v1";
+    public string Name => "rules-v2";
 
     public Scalar Parse(string text) => Scalar.Parse(text);
 
@@ -150,6 +150,20 @@ public sealed class RuleBasedCas : ICasAdapter
             return Scalar.Exp(u);
         }
 
+        /// <summary>
+        /// For a factor sin(c·|u|)ᵃ of a monomial: the atom |u|, its power b in the monomial (0 when
+        /// absent) and (c, u), when a + b is even so that the signs of u cancel; else null.
+        /// </summary>
+        private static (Atom Atom, int Power, (Rational, Scalar) Scaled)? OddAbsolutePower(IReadOnlyList<Factor> factors, Factor sine)
+        {
+            if (!Scalar.TryGetScaledAtom(sine.Atom.ArgumentArray[0], AtomKind.Abs, out var c, out var abs)) return null;
+            var power = 0;
+            foreach (var f in factors)
+                if (ReferenceEquals(f.Atom, abs)) power = f.Power;
+            if ((sine.Power + power) % 2 != 0) return null;
+            return (abs, power, (c, abs.ArgumentArray[0]));
+        }
+
         /// <summary>Rules on the factors of one monomial of the rebuilt expression.</summary>
         private static Scalar RewriteTerm(Term term)
         {
@@ -166,6 +180,9 @@ public sealed class RuleBasedCas : ICasAdapter
                         break;
                     case AtomKind.Exp:
                         exponentials++;
+                        break;
+                    case AtomKind.Sin when OddAbsolutePower(factors, factor) is not null:
+                        needed = true;
                         break;
                     case AtomKind.Cos when factor.Power < 0:
                         needed |= Array.Exists(factors, f => f.Atom.Kind == AtomKind.Sin && f.Power > 0 && ReferenceEquals(f.Atom.ArgumentArray[0], factor.Atom.ArgumentArray[0]));
@@ -196,6 +213,15 @@ public sealed class RuleBasedCas : ICasAdapter
                 {
                     exponent += Scalar.Scale(atom.ArgumentArray[0], factor.Power);
                     remaining[i] = factor with { Power = 0 };
+                }
+                else if (atom.Kind == AtomKind.Sin && OddAbsolutePower(remaining, factor) is { } absolute)
+                {
+                    // sin(c|u|)ᵃ·|u|ᵇ = sgn(u)ᵃ⁺ᵇ sin(cu)ᵃ·uᵇ, which is sin(cu)ᵃ·uᵇ when a + b is even.
+                    var (c, u) = absolute.Scaled;
+                    result *= Scalar.IntegerPower(Scalar.Sin(Scalar.Scale(u, c)), factor.Power) * Scalar.IntegerPower(u, absolute.Power);
+                    remaining[i] = factor with { Power = 0 };
+                    var j = remaining.FindIndex(f => ReferenceEquals(f.Atom, absolute.Atom));
+                    if (j >= 0) remaining[j] = remaining[j] with { Power = 0 };
                 }
                 else if (atom.Kind == AtomKind.Cos && factor.Power < 0)
                 {

@@ -25,6 +25,8 @@ public sealed partial class Scalar
     public static Scalar Cos(Scalar x)
     {
         if (x.IsStructuralZero) return One;
+        // cos is even: cos(c·|u|) = cos(c·u).
+        if (TryGetScaledAtom(x, AtomKind.Abs, out var c, out var abs)) return Cos(Scale(abs.ArgumentArray[0], c));
         if (TryGetPiMultiple(x, out var q))
         {
             if (q.IsInteger) return IsOddInteger(q) ? NegativeOne : One;
@@ -43,6 +45,7 @@ public sealed partial class Scalar
     public static Scalar Sqrt(Scalar x)
     {
         if (x.TryGetConstant(out var c) && c.TryExactSqrt(out var root)) return Constant(root);
+        if (PolynomialSquareRoot.TryRoot(x, out var polynomialRoot)) return Abs(polynomialRoot);
         // sqrt(k²·s) = k·sqrt(s) for a square rational content k² > 0 of all coefficients.
         var content = x.Content();
         if (!content.IsOne && content.TryExactSqrt(out var k))
@@ -89,7 +92,30 @@ public sealed partial class Scalar
             if (cx.IsZero && cy.Sign != 0) return Scale(Pi, new Rational(cy.Sign, 2));
             if (cx == cy && cx.Sign != 0) return Scale(Pi, new Rational(cx.Sign > 0 ? 1 : -3, 4));
         }
+        // atan2(y·a⁻ᵏ, x) = atan2(y, x·aᵏ) for a > 0: a root or absolute value dividing every term
+        // of y moves over to x, so atan(n/|s|) = atan2(n/|s|, 1) reads atan2(n, |s|) with no division.
+        if (CommonPositiveDenominator(y) is { } a) return Atan2(y * a, x * a);
         return Function(AtomKind.Atan2, y, x);
+    }
+
+    /// <summary>aᵏ for an atom a ≥ 0 (a square root or an absolute value) with a negative power in every term, else null.</summary>
+    private static Scalar? CommonPositiveDenominator(Scalar y)
+    {
+        if (y._terms.Length == 0) return null;
+        foreach (var factor in y._terms[0].Monomial.FactorArray)
+        {
+            if (factor.Power >= 0 || factor.Atom.Kind is not (AtomKind.Sqrt or AtomKind.Abs)) continue;
+            var k = -factor.Power;
+            foreach (var term in y._terms)
+            {
+                var power = 0;
+                foreach (var f in term.Monomial.FactorArray)
+                    if (ReferenceEquals(f.Atom, factor.Atom)) power = f.Power;
+                k = Math.Min(k, -power);
+            }
+            if (k > 0) return FromTerm(Rational.One, Monomial.FromAtom(factor.Atom, k));
+        }
+        return null;
     }
 
     public static Scalar Abs(Scalar x)
@@ -231,6 +257,19 @@ public sealed partial class Scalar
         var factors = x._terms[0].Monomial.FactorArray;
         if (factors.Length != 1 || factors[0].Atom.Kind != AtomKind.Pi || factors[0].Power != 1) return false;
         multiple = x._terms[0].Coefficient;
+        return true;
+    }
+
+    /// <summary>x = c·a for a rational c and a single atom a of the given kind.</summary>
+    internal static bool TryGetScaledAtom(Scalar x, AtomKind kind, out Rational coefficient, out Atom atom)
+    {
+        atom = null!;
+        coefficient = Rational.Zero;
+        if (x._terms.Length != 1) return false;
+        var factors = x._terms[0].Monomial.FactorArray;
+        if (factors.Length != 1 || factors[0].Power != 1 || factors[0].Atom.Kind != kind) return false;
+        atom = factors[0].Atom;
+        coefficient = x._terms[0].Coefficient;
         return true;
     }
 

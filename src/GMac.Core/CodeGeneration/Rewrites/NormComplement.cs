@@ -1,0 +1,97 @@
+using GMac.Core.Symbolic;
+
+namespace GMac.Core.CodeGeneration.Rewrites;
+
+/// <summary>
+/// √P where P + u² reduces to a constant c under the side relations, and the block also reads |u|:
+/// u is named once and the root reads √(c − u²). For a unit rotor Q = R₂R̃₁ this is
+/// ‖⟨Q⟩₂‖ = √(1 − ⟨Q⟩₀²), which the canonical form otherwise writes as the expanded sum of squares
+/// of the bivector part reduced by the unit constraints, a polynomial of dozens of terms.
+/// </summary>
+internal static class NormComplement
+{
+    private const int MaxPairs = 16;
+
+    public static void Apply(List<SymbolicInliner.Assignment> assignments, Func<Scalar, Scalar> simplify)
+    {
+        var absolutes = new List<Atom>();
+        var roots = new List<Atom>();
+        foreach (var a in assignments) Collect(a.Value, absolutes, roots, new HashSet<Atom>());
+        if (absolutes.Count == 0 || roots.Count == 0 || absolutes.Count * roots.Count > MaxPairs) return;
+
+        var replacements = new Dictionary<Atom, Scalar>();
+        var named = new List<(string Name, Scalar Value, Atom Absolute)>();
+        foreach (var absolute in absolutes)
+        {
+            var u = absolute.ArgumentArray[0];
+            string? name = null;
+            foreach (var root in roots)
+            {
+                var p = root.ArgumentArray[0];
+                if (replacements.ContainsKey(root) || !u.Variables.IsSubsetOf(p.Variables)) continue;
+                if (!simplify(p + u * u).TryGetConstant(out var c) || c.Sign <= 0) continue;
+                var t = Scalar.Variable(name ?? $"{TemporaryRecorder.Prefix}n{named.Count}");
+                var complement = Scalar.Constant(c) - t * t;
+                if (Cost(complement) + Cost(u) >= Cost(p)) continue;
+                if (name is null)
+                {
+                    name = t.Variables.First();
+                    named.Add((name, u, absolute));
+                    replacements[absolute] = Scalar.Abs(t);
+                }
+                replacements[root] = Scalar.Sqrt(complement);
+            }
+        }
+        if (named.Count == 0) return;
+
+        var memo = new Dictionary<Atom, Scalar>();
+        foreach (var a in assignments)
+            a.Value = Scalar.MapAtoms(a.Value, atom => replacements.GetValueOrDefault(atom), memo);
+        // Each name goes right before the first value that reads it, where all that u reads is known.
+        foreach (var (name, value, _) in named)
+        {
+            foreach (var a in assignments) a.Value = Reuse(a.Value, value, Scalar.Variable(name), simplify);
+            var first = assignments.FindIndex(a => a.Value.Variables.Contains(name));
+            assignments.Insert(first < 0 ? 0 : first, new SymbolicInliner.Assignment(name, value, false));
+        }
+    }
+
+    /// <summary>
+    /// v written as q·t + r for the named t = u, when cheaper: q and r from dividing v by u, r then
+    /// reduced by the side relations (the unit constraint w² + x² + … = 1 folds what the division
+    /// leaves, as in the scalar part of (Q − s)R₁ = R₂ − s R₁). Every atom of u is tried as the lead.
+    /// </summary>
+    private static Scalar Reuse(Scalar v, Scalar u, Scalar t, Func<Scalar, Scalar> simplify)
+    {
+        if (!u.Variables.Overlaps(v.Variables)) return v;
+        var best = v;
+        var bestCost = Cost(v);
+        foreach (var first in PolynomialRemainder.Candidates(u))
+        {
+            if (!PolynomialRemainder.TryDivide(v, u, first, out var q, out var r) || Scalar.IsZero(q)) continue;
+            var candidate = q * t + simplify(r);
+            var cost = Cost(candidate);
+            if (cost < bestCost) (best, bestCost) = (candidate, cost);
+        }
+        return best;
+    }
+
+    /// <summary>Atoms |u| and √P with u and P sums, at any depth.</summary>
+    private static void Collect(Scalar s, List<Atom> absolutes, List<Atom> roots, HashSet<Atom> seen)
+    {
+        foreach (var term in s.Terms)
+        foreach (var factor in term.Monomial.Factors)
+        {
+            var atom = factor.Atom;
+            if (!seen.Add(atom)) continue;
+            foreach (var argument in atom.Arguments) Collect(argument, absolutes, roots, seen);
+            if (atom.Arguments.Count != 1 || atom.Arguments[0].Terms.Count < 2) continue;
+            if (atom.Kind == AtomKind.Abs && !absolutes.Contains(atom)) absolutes.Add(atom);
+            if (atom.Kind == AtomKind.Sqrt && !roots.Contains(atom)) roots.Add(atom);
+        }
+    }
+
+    private static int Cost(Scalar s) =>
+        new CodeBlock([new AssignmentStatement("x", ScalarLowering.Lower(s), true)], new Dictionary<string, string>(), new Dictionary<string, string>())
+            .Statistics().Cost;
+}
