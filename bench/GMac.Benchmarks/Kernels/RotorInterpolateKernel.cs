@@ -81,12 +81,13 @@ public sealed class RotorInterpolateKernel : GaKernel<RotorPair, Rotor3>
         double tmp0 = p.R1.w * p.R2.w + p.R1.x * p.R2.x + p.R1.y * p.R2.y + p.R1.z * p.R2.z;
         double tmp1 = Math.Sqrt(1.0 - tmp0 * tmp0);
         double tmp2 = p.Alpha * Math.Atan2(tmp1, Math.Abs(tmp0));
-        double tmp3 = Math.Sin(tmp2) / tmp1;
-        double tmp4 = Math.Cos(tmp2) - tmp0 * tmp3;
-        r.w = p.R1.w * tmp4 + p.R2.w * tmp3;
-        r.x = p.R1.x * tmp4 + p.R2.x * tmp3;
-        r.y = p.R1.y * tmp4 + p.R2.y * tmp3;
-        r.z = p.R1.z * tmp4 + p.R2.z * tmp3;
+        var (tmp3, tmp5) = Math.SinCos(tmp2);
+        double tmp4 = tmp3 / tmp1;
+        double tmp6 = tmp5 - tmp0 * tmp4;
+        r.w = p.R1.w * tmp6 + p.R2.w * tmp4;
+        r.x = p.R1.x * tmp6 + p.R2.x * tmp4;
+        r.y = p.R1.y * tmp6 + p.R2.y * tmp4;
+        r.z = p.R1.z * tmp6 + p.R2.z * tmp4;
         #endregion
     }
 
