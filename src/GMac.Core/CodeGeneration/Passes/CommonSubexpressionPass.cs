@@ -13,11 +13,14 @@ public sealed class CommonSubexpressionPass(Func<int, string> temporaryName) : I
 
     public CommonSubexpressionPass() : this(i => $"cse{i}") { }
 
-    public CodeBlock Run(CodeBlock block)
+    public CodeBlock Run(CodeBlock block) => Run(block, out _);
+
+    /// <param name="counts">The counts as kept up to date through the extractions (for tests: they must equal a recount of the result).</param>
+    internal CodeBlock Run(CodeBlock block, out KeyCounts counts)
     {
         var taken = new HashSet<string>(block.Statements.OfType<AssignmentStatement>().Select(a => a.Target), StringComparer.Ordinal);
         taken.UnionWith(block.InputText.Keys);
-        var counts = new KeyCounts();
+        counts = new KeyCounts();
         var statements = block.Statements.Select(s => Counted(s)).ToList();
         foreach (var c in statements) counts.Add(c.Keys, +1);
         for (var iteration = 0; iteration < 100_000; iteration++)
