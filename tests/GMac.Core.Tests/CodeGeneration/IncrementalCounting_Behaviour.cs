@@ -69,6 +69,25 @@ public class IncrementalCounting_Behaviour
     }
 
     [Fact]
+    public void Pair_counts_merged_from_remembered_statements_equal_one_walk_over_the_whole_block()
+    {
+        var random = new Random(18);
+        var pass = new PairExtractionPass(); // one instance: its remembered statements carry over between trials
+        var previous = RandomBlock(random);
+        for (var trial = 0; trial < 200; trial++)
+        {
+            // half the statements come from the previous block, as after an extraction that left them alone
+            var kept = previous.Statements.Where(_ => random.Next(2) == 0).ToList();
+            var fresh = RandomBlock(random).Statements.Select((s, i) => Out($"n{trial}_{i}", ((AssignmentStatement)s).Value));
+            var block = Block(kept.Concat(fresh).ToArray());
+            var whole = block.WithStatements([new VerbatimStatement(block.Statements.SelectMany(s => s.Expressions).Select(VerbatimPart.Expression).ToArray())]);
+            Assert.Equal(new PairExtractionPass().FindBest(whole), pass.FindBest(block));
+            AssertSameOutputs(block, pass.Run(block));
+            previous = block;
+        }
+    }
+
+    [Fact]
     public void Lifting_with_remembered_subtrees_gives_the_polynomial_lifted_afresh()
     {
         var random = new Random(16);
