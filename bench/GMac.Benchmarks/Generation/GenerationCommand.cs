@@ -4,18 +4,25 @@ namespace GMac.Benchmarks.Generation;
 
 /// <summary>
 /// <c>generation [--dsl DIR] [--macro NAME]...</c>: the generation suite of the report alone, printed as a
-/// table (every macro cold and warm, then the whole library), so it can be measured without timing kernels.
+/// table (every macro cold and warm, then the whole library), so it can be measured without timing kernels;
+/// <c>--profile</c> prints the time per stage and optimizer pass instead.
 /// </summary>
 public static class GenerationCommand
 {
-    public const string Usage = "usage: GMac.Benchmarks generation [--dsl DIR] [--macro NAME]...";
+    public const string Usage = "usage: GMac.Benchmarks generation [--dsl DIR] [--macro NAME]... [--profile]";
 
     public static int Run(IReadOnlyList<string> args, TextWriter output, TextWriter error)
     {
         string? dsl = null;
         var macros = new List<string>();
+        var profile = false;
         for (var i = 0; i < args.Count; i++)
         {
+            if (args[i] == "--profile")
+            {
+                profile = true;
+                continue;
+            }
             if (args[i] is "--dsl" or "--macro" && i + 1 < args.Count)
             {
                 if (args[i] == "--dsl") dsl = args[++i];
@@ -34,6 +41,11 @@ public static class GenerationCommand
         }
         try
         {
+            if (profile)
+            {
+                GenerationProfiler.Run(dsl, macros.Count == 0 ? null : macros, output);
+                return 0;
+            }
             var timings = new GenerationTimer(dsl, warmRepeats: 5, macros.Count == 0 ? null : macros).Measure();
             Write(timings, output);
             return timings.Macros.Any(m => m.Error is not null) ? 1 : 0;

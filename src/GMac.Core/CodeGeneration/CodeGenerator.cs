@@ -26,18 +26,21 @@ public static class CodeGenerator
             foreach (var statementsOnly in new[] { false, true })
             {
                 var recorder = new TemporaryRecorder(request.Simplify, statementsOnly);
-                var program = request.Evaluate(recorder);
-                candidates.Add((Optimizer.Optimize(Build(program, recorder.Temporaries, request)), JoinMode.Split));
+                var form = statementsOnly ? "split by statement" : "split by operation";
+                var program = GenerationProfile.Time($"evaluate {form}", () => request.Evaluate(recorder));
+                var built = GenerationProfile.Time($"build {form}", () => Build(program, recorder.Temporaries, request));
+                candidates.Add((GenerationProfile.Time($"optimize {form}", () => Optimizer.Optimize(built)), JoinMode.Split));
             }
         }
         if (request.Join != JoinMode.Split)
         {
-            var joined = Build(request.Evaluate(null), [], request);
+            var evaluated = GenerationProfile.Time("evaluate joined", () => request.Evaluate(null));
+            var joined = GenerationProfile.Time("build joined", () => Build(evaluated, [], request));
             // Optimizing a fully expanded block is the slowest step; skip it when it starts far
             // costlier than a form already found (sharing rarely recovers more than that).
             var bestSoFar = candidates.Count == 0 ? int.MaxValue : candidates.Min(c => c.Block.Statistics().Cost);
             if (Rewrites.SharedCost.Of(joined) <= HopelessFactor * (long)bestSoFar)
-                candidates.Add((Optimizer.Optimize(joined), JoinMode.Joined));
+                candidates.Add((GenerationProfile.Time("optimize joined", () => Optimizer.Optimize(joined)), JoinMode.Joined));
         }
         // The cheapest form wins unless it is far less accurate; on a tie, the one with fewer temporaries, then the joined (simplest) form.
         var ranked = candidates
@@ -45,20 +48,25 @@ public static class CodeGenerator
             .OrderBy(c => c.Stats.Cost).ThenBy(c => c.Stats.Temporaries).ThenBy(c => c.Form == JoinMode.Joined ? 0 : 1).ThenBy(c => c.Index)
             .ToList();
         // accuracy overrules cost only where the cheaper form loses far more than the others
-        var best = ranked[AccuracyProbe.MostAccurateAffordable(ranked.Select(c => c.Block).ToList())];
+        var best = ranked[GenerationProfile.Time("accuracy probe", () => AccuracyProbe.MostAccurateAffordable(ranked.Select(c => c.Block).ToList()))];
         var alternative = ranked.Skip(1).FirstOrDefault(c => c.Form != best.Form);
         return new CodeGenerationResult(best.Block, best.Stats, best.Form, alternative.Block is null ? null : alternative.Stats);
     }
 
     /// <summary>
     /// The caller's simplifier (side relations, assumptions), with sums cancelled against their
-    /// inverses and half-angle products of sines and cosines reduced to full angles.
+    /// inverses and half-angle products of sines and cosines reduced to full angles. Its answers
+    /// are remembered for the whole request: the three forms and the symbolic inliner ask about the
+    /// same values many times, and the caller's cache covers only its own part of the work.
     /// </summary>
     private static Func<Scalar, Scalar> EffectiveSimplifier(Func<Scalar, Scalar>? simplify)
     {
         simplify ??= s => s;
+        var answers = new Dictionary<Scalar, Scalar>(); // scalars are hash-consed: a look-up is O(1)
         return s =>
         {
+            if (answers.TryGetValue(s, out var known)) return known;
+            var question = s;
             s = simplify(s);
             for (var round = 0; round < 4; round++)
             {
@@ -66,6 +74,7 @@ public static class CodeGenerator
                 if (ReferenceEquals(reduced, s)) break;
                 s = simplify(reduced);
             }
+            answers[question] = s;
             return s;
         };
     }
@@ -94,8 +103,8 @@ public static class CodeGenerator
         var verbatimCount = verbatim.Count;
         if (verbatimCount == 0)
         {
-            SymbolicInliner.Inline(assignments, simplify);
-            Rewrites.NormComplement.Apply(assignments, simplify);
+            GenerationProfile.Time("symbolic inliner", () => { SymbolicInliner.Inline(assignments, simplify); return 0; });
+            GenerationProfile.Time("norm complement", () => { Rewrites.NormComplement.Apply(assignments, simplify); return 0; });
         }
 
         var known = new HashSet<string>(inputs, StringComparer.Ordinal);

@@ -16,24 +16,26 @@ public sealed class Optimizer
         var pairs = new PairExtractionPass();
         var factor = new SumFactoringPass();
 
-        block = new TranslationInvariancePass().Run(block); // before any pass shapes sums for sharing
-        block = dead.Run(copy.Run(fold.Run(block)));
-        block = dead.Run(new AlgebraicValueNumberingPass().Run(block));
-        block = fold.Run(strength.Run(block));
+        block = P(new TranslationInvariancePass(), block); // before any pass shapes sums for sharing
+        block = P(dead, P(copy, P(fold, block)));
+        block = P(dead, P(new AlgebraicValueNumberingPass(), block));
+        block = P(fold, P(strength, block));
         for (var round = 0; round < 8; round++)
         {
             var before = (block.Statistics(), block.Statements.Count);
-            block = inline.Run(block);
-            block = copy.Run(fold.Run(block));
-            block = dead.Run(cse.Run(block));
-            block = dead.Run(cse.Run(pairs.Run(block)));
-            block = fold.Run(factor.Run(block));
+            block = P(inline, block);
+            block = P(copy, P(fold, block));
+            block = P(dead, P(cse, block));
+            block = P(dead, P(cse, P(pairs, block)));
+            block = P(fold, P(factor, block));
             if ((block.Statistics(), block.Statements.Count) == before) break;
         }
-        block = strength.Run(block); // CSE may expose repeated denominators
-        block = new SquareRootReciprocalPass().Run(new ConstantAbsorptionPass().Run(block));
-        block = new ReciprocalDeferralPass().Run(block);
-        block = new SineCosinePairingPass().Run(block); // last: later passes could inline the calls again
-        return reuseTemporaries ? new TemporaryReusePass().Run(block) : block;
+        block = P(strength, block); // CSE may expose repeated denominators
+        block = P(new SquareRootReciprocalPass(), P(new ConstantAbsorptionPass(), block));
+        block = P(new ReciprocalDeferralPass(), block);
+        block = P(new SineCosinePairingPass(), block); // last: later passes could inline the calls again
+        return reuseTemporaries ? P(new TemporaryReusePass(), block) : block;
     }
+
+    private static CodeBlock P(IOptimizerPass pass, CodeBlock block) => GenerationProfile.Time(pass.Name, () => pass.Run(block));
 }

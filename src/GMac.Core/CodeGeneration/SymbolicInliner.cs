@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using GMac.Core.Symbolic;
 
 namespace GMac.Core.CodeGeneration;
@@ -27,14 +28,10 @@ internal static class SymbolicInliner
     public static void Inline(List<Assignment> assignments, Func<Scalar, Scalar> simplify, int maxRounds = 4)
     {
         if (assignments.Count > MaxAssignments) return;
-        var cost = new Dictionary<Scalar, int>();
-        int Cost(Scalar s)
-        {
-            if (cost.TryGetValue(s, out var c)) return c;
-            var block = new CodeBlock([new AssignmentStatement("x", ScalarLowering.Lower(s), true)], new Dictionary<string, string>(), new Dictionary<string, string>());
-            return cost[s] = block.Statistics().Cost;
-        }
-
+        // What each refused temporary and its readers were when it was refused: the trial is a
+        // function of exactly these values (scalars are hash-consed, so identity is equality), and
+        // a later round repeats it only for temporaries whose neighbourhood changed since.
+        var refused = new Dictionary<Assignment, Scalar[]>(ReferenceEqualityComparer.Instance);
         for (var round = 0; round < maxRounds; round++)
         {
             var changed = false;
@@ -44,11 +41,17 @@ internal static class SymbolicInliner
                 if (temp.IsOutput) continue;
                 var readers = assignments.Where(a => a.Value.Variables.Contains(temp.Name)).ToList();
                 if (readers.Count == 0) continue;
+                var neighbourhood = readers.Select(r => r.Value).Prepend(temp.Value).ToArray();
+                if (refused.TryGetValue(temp, out var before) && before.AsSpan().SequenceEqual(neighbourhood)) continue;
                 var replacement = new Dictionary<string, Scalar>(StringComparer.Ordinal) { [temp.Name] = temp.Value };
                 var substituted = readers.Select(r => simplify(r.Value.Substitute(replacement))).ToList();
                 var keep = Cost(temp.Value) + readers.Sum(r => Cost(r.Value));
                 var inline = substituted.Sum(Cost);
-                if (inline > keep) continue;
+                if (inline > keep)
+                {
+                    refused[temp] = neighbourhood;
+                    continue;
+                }
                 for (var k = 0; k < readers.Count; k++) readers[k].Value = substituted[k];
                 assignments.RemoveAt(i);
                 i--;
@@ -57,4 +60,16 @@ internal static class SymbolicInliner
             if (!changed) break;
         }
     }
+
+    /// <summary>
+    /// Operations of a scalar once lowered (factored), remembered per scalar for the process:
+    /// lowering depends on nothing else, and every form and binding point asks about the same values.
+    /// </summary>
+    private static int Cost(Scalar s) => Costs.GetValue(s, static s =>
+    {
+        var block = new CodeBlock([new AssignmentStatement("x", ScalarLowering.Lower(s), true)], new Dictionary<string, string>(), new Dictionary<string, string>());
+        return new StrongBox<int>(block.Statistics().Cost);
+    }).Value;
+
+    private static readonly ConditionalWeakTable<Scalar, StrongBox<int>> Costs = new();
 }

@@ -13,19 +13,98 @@ public sealed class CommonSubexpressionPass(Func<int, string> temporaryName) : I
 
     public CommonSubexpressionPass() : this(i => $"cse{i}") { }
 
-    public CodeBlock Run(CodeBlock block)
+    public CodeBlock Run(CodeBlock block) => Run(block, out _);
+
+    /// <param name="counts">The counts as kept up to date through the extractions (for tests: they must equal a recount of the result).</param>
+    internal CodeBlock Run(CodeBlock block, out KeyCounts counts)
     {
         var taken = new HashSet<string>(block.Statements.OfType<AssignmentStatement>().Select(a => a.Target), StringComparer.Ordinal);
         taken.UnionWith(block.InputText.Keys);
+        counts = new KeyCounts();
+        var statements = block.Statements.Select(s => Counted(s)).ToList();
+        foreach (var c in statements) counts.Add(c.Keys, +1);
         for (var iteration = 0; iteration < 100_000; iteration++)
         {
-            var best = FindBest(block);
-            if (best is null) return block;
+            var best = FindBest(statements, counts);
+            if (best is null) break;
             string name;
             do name = temporaryName(_counter++); while (!taken.Add(name));
-            block = Extract(block, best, name);
+            Extract(statements, counts, best, name);
         }
-        return block;
+        return block.WithStatements(statements.Select(c => c.Statement));
+    }
+
+    /// <summary>A statement with its keys: count and first position (in <see cref="Expr.DescendantsAndSelf"/> order) of each.</summary>
+    internal sealed record CountedStatement(CodeStatement Statement, Dictionary<Expr, (int Count, int First)> Keys);
+
+    /// <summary>Occurrences of every key over the block, and the keys that occur more than once.</summary>
+    internal sealed class KeyCounts
+    {
+        public Dictionary<Expr, int> Totals { get; } = new();
+
+        public HashSet<Expr> Repeated { get; } = new();
+
+        public void Add(Dictionary<Expr, (int Count, int First)> keys, int sign)
+        {
+            foreach (var (key, (count, _)) in keys)
+            {
+                var total = Totals.GetValueOrDefault(key) + sign * count;
+                if (total == 0) Totals.Remove(key);
+                else Totals[key] = total;
+                if (total >= 2) Repeated.Add(key);
+                else Repeated.Remove(key);
+            }
+        }
+    }
+
+    internal CountedStatement Counted(CodeStatement s)
+    {
+        var keys = new Dictionary<Expr, (int Count, int First)>();
+        var position = 0;
+        foreach (var root in s.Expressions)
+        foreach (var node in root.DescendantsAndSelf())
+        {
+            if (node.IsLeaf || node is NegateExpr) continue;
+            var key = Canonical(node).Key;
+            if (key.IsLeaf) continue;
+            keys[key] = keys.TryGetValue(key, out var known) ? (known.Count + 1, known.First) : (1, position++);
+        }
+        return new CountedStatement(s, keys);
+    }
+
+    /// <summary>
+    /// The key that saves most; among equal savings the largest, then the one met first reading the
+    /// statements in order. Counts are kept up to date per statement as extractions touch them, so
+    /// a round reads only the keys that repeat, not the whole block.
+    /// </summary>
+    private Expr? FindBest(List<CountedStatement> statements, KeyCounts counts)
+    {
+        var bestSaving = 0;
+        var bestSize = 0;
+        var tied = new List<Expr>();
+        foreach (var e in counts.Repeated)
+        {
+            var saving = (counts.Totals[e] - 1) * OperationCost(e);
+            if (saving <= 0 || saving < bestSaving || (saving == bestSaving && e.Size < bestSize)) continue;
+            if (saving > bestSaving || e.Size > bestSize) tied.Clear();
+            bestSaving = saving;
+            bestSize = e.Size;
+            tied.Add(e);
+        }
+        if (tied.Count <= 1) return tied.FirstOrDefault();
+        foreach (var c in statements)
+        {
+            Expr? first = null;
+            var firstPosition = int.MaxValue;
+            foreach (var e in tied)
+                if (c.Keys.TryGetValue(e, out var at) && at.First < firstPosition)
+                {
+                    first = e;
+                    firstPosition = at.First;
+                }
+            if (first is not null) return first;
+        }
+        return tied[0];
     }
 
     private readonly Dictionary<Expr, Expr> _keys = new(ReferenceEqualityComparer.Instance);
@@ -73,33 +152,6 @@ public sealed class CommonSubexpressionPass(Func<int, string> temporaryName) : I
         return oppositeFirst ? (opposite, true) : (key, false);
     }
 
-    private Expr? FindBest(CodeBlock block)
-    {
-        var counts = new Dictionary<Expr, int>();
-        foreach (var s in block.Statements)
-        foreach (var root in s.Expressions)
-        foreach (var node in root.DescendantsAndSelf())
-        {
-            if (node.IsLeaf || node is NegateExpr) continue;
-            var key = Canonical(node).Key;
-            if (key.IsLeaf) continue;
-            counts[key] = counts.GetValueOrDefault(key) + 1;
-        }
-        Expr? best = null;
-        var bestSaving = 0;
-        foreach (var (e, count) in counts)
-        {
-            if (count < 2) continue;
-            var saving = (count - 1) * OperationCost(e);
-            if (saving > bestSaving || (saving == bestSaving && best is not null && e.Size > best.Size))
-            {
-                best = e;
-                bestSaving = saving;
-            }
-        }
-        return best;
-    }
-
     private readonly Dictionary<Expr, int> _costs = new();
 
     private int OperationCost(Expr e)
@@ -114,25 +166,29 @@ public sealed class CommonSubexpressionPass(Func<int, string> temporaryName) : I
         return block.Statistics().Cost;
     }
 
-    private CodeBlock Extract(CodeBlock block, Expr key, string name)
+    /// <summary>Names the key before its first use and replaces it (or its negation) in the statements that read it; only those are recounted.</summary>
+    private void Extract(List<CountedStatement> statements, KeyCounts counts, Expr key, string name)
     {
         var variable = ExprFactory.Variable(name);
         bool Matches(Expr node) => !node.IsLeaf && node is not NegateExpr && Canonical(node).Key.Equals(key);
         Expr Replace(Expr root) => BlockRewriting.ReplaceNodes(root, node =>
             Matches(node) ? (Canonical(node).Negated ? ExprFactory.Negate(variable) : variable) : null);
 
-        var result = new List<CodeStatement>();
-        var inserted = false;
-        foreach (var s in block.Statements)
+        var firstUse = -1;
+        for (var i = 0; i < statements.Count; i++)
         {
-            if (!inserted && s.Expressions.Any(e => e.DescendantsAndSelf().Any(Matches)))
-            {
-                result.Add(new AssignmentStatement(name, key, false));
-                inserted = true;
-            }
+            var c = statements[i];
+            if (!c.Keys.ContainsKey(key)) continue;
+            if (firstUse < 0) firstUse = i;
+            var s = c.Statement;
             var exprs = s.Expressions.Select(Replace).ToArray();
-            result.Add(exprs.SequenceEqual(s.Expressions, ReferenceEqualityComparer.Instance) ? s : s.WithExpressions(exprs));
+            if (exprs.SequenceEqual(s.Expressions, ReferenceEqualityComparer.Instance)) continue;
+            counts.Add(c.Keys, -1);
+            statements[i] = Counted(s.WithExpressions(exprs));
+            counts.Add(statements[i].Keys, +1);
         }
-        return block.WithStatements(result);
+        var definition = Counted(new AssignmentStatement(name, key, false));
+        statements.Insert(firstUse, definition);
+        counts.Add(definition.Keys, +1);
     }
 }

@@ -1,3 +1,5 @@
+using System.Runtime.CompilerServices;
+
 namespace GMac.Core.CodeGeneration.Passes;
 
 /// <summary>
@@ -13,7 +15,7 @@ public sealed class PairExtractionPass(Func<int, string> temporaryName) : IOptim
 
     public PairExtractionPass() : this(i => $"pair{i}") { }
 
-    private readonly record struct Pair(Expr First, Expr Second);
+    internal readonly record struct Pair(Expr First, Expr Second);
 
     public CodeBlock Run(CodeBlock block)
     {
@@ -60,17 +62,24 @@ public sealed class PairExtractionPass(Func<int, string> temporaryName) : IOptim
     /// <summary>Nodes with more items than this are not searched for pairs (the count grows quadratically).</summary>
     private const int MaxItems = 12;
 
-    private static List<(Pair Pair, bool IsProduct)> FindBest(CodeBlock block)
+    /// <summary>
+    /// The pairs of one statement in the order they are first met, each with the number of its
+    /// nodes that hold it. A statement is immutable and an extraction rebuilds only the statements
+    /// it touches, so the others keep their lists from one count of the block to the next.
+    /// </summary>
+    private readonly ConditionalWeakTable<CodeStatement, List<((Pair, bool) Key, int Count)>> _statementPairs = new();
+
+    private List<((Pair, bool) Key, int Count)> PairsOf(CodeStatement statement) =>
+        _statementPairs.GetValue(statement, CountPairs);
+
+    private static List<((Pair, bool) Key, int Count)> CountPairs(CodeStatement statement)
     {
         var counts = new Dictionary<(Pair, bool), int>();
         var order = new List<(Pair, bool)>();
-        // One item list and one set of pairs reused for every node: this runs once per extraction
-        // round over the whole block, and per-node collections made it mostly allocation and GC.
         var items = new List<(Expr Item, bool Negated)>(MaxItems);
         var seen = new HashSet<(Pair, bool)>();
         var pending = new Stack<Expr>();
-        foreach (var s in block.Statements)
-        foreach (var root in s.Expressions)
+        foreach (var root in statement.Expressions)
         {
             pending.Push(root);
             while (pending.Count > 0)
@@ -93,6 +102,21 @@ public sealed class PairExtractionPass(Func<int, string> temporaryName) : IOptim
                     else { counts[key] = 1; order.Add(key); }
                 }
             }
+        }
+        return order.Select(k => (k, counts[k])).ToList();
+    }
+
+    internal List<(Pair Pair, bool IsProduct)> FindBest(CodeBlock block)
+    {
+        // The statements' lists merged in statement order: the same counts and first-seen order as
+        // one walk over the whole block, without walking the statements no extraction changed.
+        var counts = new Dictionary<(Pair, bool), int>();
+        var order = new List<(Pair, bool)>();
+        foreach (var s in block.Statements)
+        foreach (var (key, n) in PairsOf(s))
+        {
+            if (counts.TryGetValue(key, out var count)) counts[key] = count + n;
+            else { counts[key] = n; order.Add(key); }
         }
         // Most shared first (stable: first seen first); then greedily those that share no item.
         var ranked = order.Where(k => counts[k] >= 2).OrderByDescending(k => counts[k]).ToList();

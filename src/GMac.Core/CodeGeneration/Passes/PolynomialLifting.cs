@@ -9,16 +9,30 @@ namespace GMac.Core.CodeGeneration.Passes;
 /// </summary>
 internal static class PolynomialLifting
 {
-    public static bool TryLift(Expr e, out Scalar polynomial)
+    public static bool TryLift(Expr e, out Scalar polynomial) => TryLift(e, null, out polynomial);
+
+    /// <param name="known">
+    /// Lifts already made, by node: a caller that lifts a sum and then the sums inside it (as a
+    /// top-down rewrite does when the outer one is kept) lifts each subtree once instead of once
+    /// per enclosing sum.
+    /// </param>
+    public static bool TryLift(Expr e, Dictionary<Expr, Scalar?>? known, out Scalar polynomial)
     {
         polynomial = Scalar.Zero;
-        var lifted = Lift(e);
+        var lifted = Lift(e, known);
         if (lifted is null) return false;
         polynomial = lifted;
         return true;
     }
 
-    private static Scalar? Lift(Expr e)
+    private static Scalar? Lift(Expr e, Dictionary<Expr, Scalar?>? known)
+    {
+        if (e.IsLeaf || known is null) return LiftNode(e, known);
+        if (known.TryGetValue(e, out var lifted)) return lifted;
+        return known[e] = LiftNode(e, known);
+    }
+
+    private static Scalar? LiftNode(Expr e, Dictionary<Expr, Scalar?>? known)
     {
         switch (e)
         {
@@ -27,15 +41,15 @@ internal static class PolynomialLifting
             case VariableExpr v:
                 return Scalar.Variable(v.Name);
             case NegateExpr n:
-                return Lift(n.Operand) is { } operand ? -operand : null;
+                return Lift(n.Operand, known) is { } operand ? -operand : null;
             case PowerExpr { Exponent: > 0 } p:
-                return Lift(p.Base) is { } b ? Scalar.IntegerPower(b, p.Exponent) : null;
+                return Lift(p.Base, known) is { } b ? Scalar.IntegerPower(b, p.Exponent) : null;
             case SumExpr s:
             {
                 var sum = Scalar.Zero;
                 foreach (var c in s.Children)
                 {
-                    if (Lift(c) is not { } term) return null;
+                    if (Lift(c, known) is not { } term) return null;
                     sum += term;
                 }
                 return sum;
@@ -45,7 +59,7 @@ internal static class PolynomialLifting
                 var product = Scalar.One;
                 foreach (var c in p.Children)
                 {
-                    if (Lift(c) is not { } factor) return null;
+                    if (Lift(c, known) is not { } factor) return null;
                     product *= factor;
                 }
                 return product;

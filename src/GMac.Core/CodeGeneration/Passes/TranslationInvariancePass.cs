@@ -28,17 +28,26 @@ public sealed class TranslationInvariancePass : IOptimizerPass
     public CodeBlock Run(CodeBlock block)
     {
         var inputOrder = block.InputText.Keys.Select((k, i) => (k, i)).ToDictionary(p => p.k, p => p.i, StringComparer.Ordinal);
+        // A sum left as it is has the sums inside it tried next, and equal sums recur across
+        // statements: lifts (by node) and group searches (by polynomial) are made once per block.
+        var lifts = new Dictionary<Expr, Scalar?>(ReferenceEqualityComparer.Instance);
+        var groups = new Dictionary<Scalar, List<List<string>>>();
         return BlockRewriting.MapExpressions(block, e => BlockRewriting.ReplaceNodes(e, node =>
-            node is SumExpr && node.Size <= MaxNodes ? Rewrite(node, inputOrder) : null));
+            node is SumExpr && node.Size <= MaxNodes ? Rewrite(node, inputOrder, lifts, groups) : null));
     }
 
     /// <summary>The difference form of one sum, or null to keep it (and look inside it).</summary>
-    internal static Expr? Rewrite(Expr sum, IReadOnlyDictionary<string, int> inputOrder)
+    internal static Expr? Rewrite(Expr sum, IReadOnlyDictionary<string, int> inputOrder,
+        Dictionary<Expr, Scalar?>? lifts = null, Dictionary<Scalar, List<List<string>>>? knownGroups = null)
     {
-        if (!PolynomialLifting.TryLift(sum, out var polynomial) || !HasDegreeTwo(polynomial)) return null;
+        if (!PolynomialLifting.TryLift(sum, lifts, out var polynomial) || !HasDegreeTwo(polynomial)) return null;
         var inputs = polynomial.Variables.Where(inputOrder.ContainsKey).OrderBy(v => inputOrder[v]).ToList();
         if (inputs.Count < 2 || inputs.Count > MaxVariables || polynomial.Variables.Any(v => v.StartsWith(DifferencePrefix, StringComparison.Ordinal))) return null;
-        var groups = TranslationGroups.Find(polynomial, inputs);
+        if (knownGroups is null || !knownGroups.TryGetValue(polynomial, out var groups))
+        {
+            groups = TranslationGroups.Find(polynomial, inputs);
+            knownGroups?.Add(polynomial, groups);
+        }
         if (groups.Count == 0) return null;
 
         var pinned = new Dictionary<string, Scalar>(StringComparer.Ordinal);
