@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using BenchmarkDotNet.Attributes;
 using BenchmarkDotNet.Configs;
 using RayTracer.Factories;
@@ -49,6 +50,10 @@ public class PrimaryRayBenchmarks
         }
     }
 
+    // Inlined into every benchmark, so each has its own call site to GetRay: with one shared loop the
+    // JIT's profile of that call site mixes every camera run before in the same process, and a
+    // camera's figure depended on which others had run (the in-process toolchain shares the JIT).
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private double Sweep(string name)
     {
         var camera = _cameras[name];

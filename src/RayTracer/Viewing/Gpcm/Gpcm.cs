@@ -20,7 +20,17 @@ public sealed class Gpcm(IParametricSurface surface, GpcmMapping mapping = GpcmM
         : throw new ArgumentOutOfRangeException(nameof(mapping), $"Unknown uv mapping {mapping}.");
 
     /// <summary>Rays start at the eye (default) or on the surface (a cutting surface, thesis §6.5.3).</summary>
-    public GpcmRayOrigin RayOrigin { get; set; } = GpcmRayOrigin.Eye;
+    public GpcmRayOrigin RayOrigin
+    {
+        get => _rayOrigin;
+        set
+        {
+            _rayOrigin = value;
+            _activeLens = ActiveLens();
+        }
+    }
+
+    private GpcmRayOrigin _rayOrigin = GpcmRayOrigin.Eye;
 
     /// <summary>Rays run from the eye through the surface (default) or back from the surface through the eye.</summary>
     public GpcmRayDirection RayDirection { get; set; } = GpcmRayDirection.Outward;
@@ -155,7 +165,17 @@ public sealed class Gpcm(IParametricSurface surface, GpcmMapping mapping = GpcmM
     /// ray goes the general way any surface takes (the surface's cascade, then the turn into the world),
     /// which gives the same rays more slowly: a reference for checking the kernels.
     /// </summary>
-    public bool EvaluateThroughCascade { get; set; }
+    public bool EvaluateThroughCascade
+    {
+        get => _evaluateThroughCascade;
+        set
+        {
+            _evaluateThroughCascade = value;
+            _activeLens = ActiveLens();
+        }
+    }
+
+    private bool _evaluateThroughCascade;
 
     /// <summary>
     /// S(u, v), calling the catalogue's sealed surface types directly so the JIT can inline them (the
@@ -173,20 +193,43 @@ public sealed class Gpcm(IParametricSurface surface, GpcmMapping mapping = GpcmM
 
     private readonly GpcmLensKind _lens = GpcmLensKinds.Of(surface, mapping);
 
+    /// <summary>The lens kernel rays take now: none when rays start on the surface or go through the cascade.</summary>
+    private GpcmLensKind _activeLens = GpcmLensKinds.Of(surface, mapping);
+
+    private GpcmLensKind ActiveLens() => RayOrigin == GpcmRayOrigin.Eye && !EvaluateThroughCascade ? _lens : GpcmLensKind.None;
+
+    /// <summary>The lens's view-plane scales for the last view plane; replaced whole, so render threads share it safely.</summary>
+    private LensScale? _scale;
+
     public override bool GetRay(Point2D pp, ViewPlane vp, out Ray ray)
     {
+        // The pinhole's lens is the cheapest, so anything else on its path (a call, the other lenses'
+        // code, the registers they save) is a large share of its cost: it alone is handled here, and
+        // every other case, first use of a view plane and error included, goes to one call.
+        var orientation = Orientation;
+        var scale = _scale;
+        if (_activeLens == GpcmLensKind.Rectangle && orientation is not null && scale is not null && scale.Fits(vp))
+            return FromEye(LensKernels.Rectangle(pp.x * scale.X, pp.y * scale.Y, scale.Z, orientation), orientation, out ray);
+        return OtherRay(pp, vp, out ray);
+    }
+
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private bool OtherRay(Point2D pp, ViewPlane vp, out Ray ray)
+    {
         var orientation = Orientation ?? throw new InvalidOperationException("The camera is not oriented: call Orient() after setting its eye, look-at point and up direction.");
-        if (_lens == GpcmLensKind.None || RayOrigin != GpcmRayOrigin.Eye || EvaluateThroughCascade)
+        var lens = _activeLens;
+        if (lens == GpcmLensKind.None)
             return CascadeRay(pp, vp, orientation, out ray);
-        // Only the pinhole's lens is inlined here: it is the cheapest, so a call would be a large share of
-        // its cost, and the others' code and stack would slow it down.
-        return _lens switch
+        var scale = _scale;
+        if (scale is null || !scale.Fits(vp))
+            _scale = scale = LensScale.For(Surface, lens, vp);
+        return lens switch
         {
-            GpcmLensKind.Rectangle => FromEye(LensRays.Rectangle((RectangularProjectionSurface)Surface, pp, vp, orientation), orientation, out ray),
-            GpcmLensKind.Sphere => SphereRay(pp, vp, orientation, out ray),
-            GpcmLensKind.Cylinder => CylinderRay(pp, vp, orientation, out ray),
-            GpcmLensKind.Cone => ConeRay(pp, vp, orientation, out ray),
-            _ => CapRay(pp, vp, orientation, out ray),
+            GpcmLensKind.Rectangle => FromEye(LensKernels.Rectangle(pp.x * scale.X, pp.y * scale.Y, scale.Z, orientation), orientation, out ray),
+            GpcmLensKind.Sphere => FromEye(LensRays.Sphere(pp, scale, orientation), orientation, out ray),
+            GpcmLensKind.Cylinder => FromEye(LensRays.Cylinder(pp, scale, orientation), orientation, out ray),
+            GpcmLensKind.Cone => FromEye(LensRays.Cone((ConeLens)Surface, pp, scale, orientation), orientation, out ray),
+            _ => CapRay(pp, scale, orientation, out ray),
         };
     }
 
@@ -200,22 +243,9 @@ public sealed class Gpcm(IParametricSurface surface, GpcmMapping mapping = GpcmM
         return true;
     }
 
-    [MethodImpl(MethodImplOptions.NoInlining)]
-    private bool SphereRay(Point2D pp, ViewPlane vp, GpcmOrientation orientation, out Ray ray) =>
-        FromEye(LensRays.Sphere((SphereLens)Surface, pp, vp, orientation), orientation, out ray);
-
-    [MethodImpl(MethodImplOptions.NoInlining)]
-    private bool CylinderRay(Point2D pp, ViewPlane vp, GpcmOrientation orientation, out Ray ray) =>
-        FromEye(LensRays.Cylinder((CylinderLens)Surface, pp, vp, orientation), orientation, out ray);
-
-    [MethodImpl(MethodImplOptions.NoInlining)]
-    private bool ConeRay(Point2D pp, ViewPlane vp, GpcmOrientation orientation, out Ray ray) =>
-        FromEye(LensRays.Cone((ConeLens)Surface, pp, vp, orientation), orientation, out ray);
-
-    [MethodImpl(MethodImplOptions.NoInlining)]
-    private bool CapRay(Point2D pp, ViewPlane vp, GpcmOrientation orientation, out Ray ray)
+    private bool CapRay(Point2D pp, LensScale scale, GpcmOrientation orientation, out Ray ray)
     {
-        if (LensRays.Cap((CapLens)Surface, pp, vp, orientation, out var direction))
+        if (LensRays.Cap((CapLens)Surface, pp, scale, orientation, out var direction))
             return FromEye(direction, orientation, out ray);
         ray = default;
         return false;

@@ -4,48 +4,35 @@ using RayTracer.Maths;
 namespace RayTracer.Viewing;
 
 /// <summary>
-/// A catalogue lens's unit ray direction for a view-plane point: the view plane mapped straight to the
-/// kernel's parameters (the (u, v) of <see cref="Gpcm.RectangularMap"/> or <see cref="Gpcm.PolarMap"/>
-/// folded into the surface's own angles and lengths), then the lens's generated kernel.
+/// A catalogue lens's unit ray direction for a view-plane point: the point scaled to the kernel's
+/// parameters (<see cref="LensScale"/>: the (u, v) of <see cref="Gpcm.RectangularMap"/> or
+/// <see cref="Gpcm.PolarMap"/> folded into the surface's own angles and lengths), then the lens's
+/// generated kernel.
 /// </summary>
 internal static class LensRays
 {
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Vector3D Rectangle(RectangularProjectionSurface rectangle, Point2D pp, ViewPlane vp, GpcmOrientation orientation) =>
-        LensKernels.Rectangle(
-            pp.x * (rectangle.Width / (vp.HorizontalResolution * vp.PixelSize)),
-            pp.y * (rectangle.Height / (vp.VerticalResolution * vp.PixelSize)),
-            rectangle.Distance, orientation);
+    public static Vector3D Sphere(Point2D pp, LensScale scale, GpcmOrientation orientation) =>
+        LensKernels.Sphere(pp.x * scale.X, pp.y * scale.Y, orientation);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Vector3D Sphere(SphereLens sphere, Point2D pp, ViewPlane vp, GpcmOrientation orientation) =>
-        LensKernels.Sphere(
-            pp.x * (2 * sphere.MaxAzimuth / (vp.HorizontalResolution * vp.PixelSize)),
-            pp.y * (2 * sphere.MaxElevation / (vp.VerticalResolution * vp.PixelSize)),
-            orientation);
+    public static Vector3D Cylinder(Point2D pp, LensScale scale, GpcmOrientation orientation) =>
+        LensKernels.Ring(pp.x * scale.X, pp.y * scale.Y, 1, orientation);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Vector3D Cylinder(CylinderLens cylinder, Point2D pp, ViewPlane vp, GpcmOrientation orientation) =>
-        LensKernels.Ring(
-            pp.x * (2 * cylinder.MaxAzimuth / (vp.HorizontalResolution * vp.PixelSize)),
-            pp.y * (cylinder.Height / (vp.VerticalResolution * vp.PixelSize)),
-            1, orientation);
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Vector3D Cone(ConeLens cone, Point2D pp, ViewPlane vp, GpcmOrientation orientation)
+    public static Vector3D Cone(ConeLens cone, Point2D pp, LensScale scale, GpcmOrientation orientation)
     {
-        var along = pp.y * (cone.Slant / (vp.VerticalResolution * vp.PixelSize));
-        return LensKernels.Ring(
-            pp.x * (2 * cone.MaxAzimuth / (vp.HorizontalResolution * vp.PixelSize)),
-            along * cone.CosTilt, 1 - along * cone.SinTilt, orientation);
+        var along = pp.y * scale.Y;
+        return LensKernels.Ring(pp.x * scale.X, along * cone.CosTilt, 1 - along * cone.SinTilt, orientation);
     }
 
     /// <summary>False outside the ellipse inscribed in the image.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static bool Cap(CapLens cap, Point2D pp, ViewPlane vp, GpcmOrientation orientation, out Vector3D direction)
+    public static bool Cap(CapLens cap, Point2D pp, LensScale scale, GpcmOrientation orientation, out Vector3D direction)
     {
-        var nx = 2 * pp.x / (vp.HorizontalResolution * vp.PixelSize);
-        var ny = 2 * pp.y / (vp.VerticalResolution * vp.PixelSize);
+        // Divided, not multiplied by a reciprocal, so the ellipse's edge falls where the polar map puts it.
+        var nx = pp.x / scale.X;
+        var ny = pp.y / scale.Y;
         var r = Math.Sqrt(nx * nx + ny * ny);
         if (r > 1)
         {
