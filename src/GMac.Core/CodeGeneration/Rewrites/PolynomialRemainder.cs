@@ -18,36 +18,62 @@ internal static class PolynomialRemainder
         quotient = Scalar.Zero;
         remainder = b;
         if (Scalar.IsZero(s) || Scalar.IsZero(b)) return false;
-        var lead = Leading(s, first);
-        var rest = b;
+        var lead = Leading(s.Terms, first);
+        // The dividend's remaining terms by monomial (monomials are interned, so keys compare by
+        // reference): each step updates a few entries instead of building a new canonical sum.
+        var rest = new Dictionary<Monomial, Rational>(b.Terms.Count * 2);
+        foreach (var t in b.Terms) rest[t.Monomial] = t.Coefficient;
         var q = new List<Term>();
         var r = new List<Term>();
-        for (var step = 0; !Scalar.IsZero(rest); step++)
+        for (var step = 0; rest.Count > 0; step++)
         {
             if (step == MaxSteps) return false;
             var top = Leading(rest, first);
             var factor = Divide(top.Monomial, lead.Monomial);
+            rest.Remove(top.Monomial);
             if (factor is null)
             {
                 r.Add(top);
-                rest -= Scalar.FromTerm(top.Coefficient, top.Monomial);
                 continue;
             }
             var t = new Term(top.Coefficient / lead.Coefficient, factor);
             q.Add(t);
-            rest -= Scalar.FromTerm(t.Coefficient, t.Monomial) * s;
+            // rest −= t·s; the leading product cancels top, already removed.
+            foreach (var u in s.Terms)
+            {
+                if (ReferenceEquals(u.Monomial, lead.Monomial)) continue;
+                var m = factor * u.Monomial;
+                var c = rest.TryGetValue(m, out var have) ? have - t.Coefficient * u.Coefficient : -(t.Coefficient * u.Coefficient);
+                if (c.IsZero) rest.Remove(m);
+                else rest[m] = c;
+            }
         }
         quotient = Scalar.FromTerms(q);
         remainder = Scalar.FromTerms(r);
         return true;
     }
 
-    private static Term Leading(Scalar s, Atom first)
+    private static Term Leading(IReadOnlyList<Term> terms, Atom first)
     {
-        var best = s.Terms[0];
-        for (var i = 1; i < s.Terms.Count; i++)
-            if (Compare(s.Terms[i].Monomial, best.Monomial, first) > 0) best = s.Terms[i];
+        var best = terms[0];
+        for (var i = 1; i < terms.Count; i++)
+            if (Compare(terms[i].Monomial, best.Monomial, first) > 0) best = terms[i];
         return best;
+    }
+
+    private static Term Leading(Dictionary<Monomial, Rational> terms, Atom first)
+    {
+        Monomial? best = null;
+        var coefficient = Rational.Zero;
+        foreach (var (m, c) in terms)
+        {
+            if (best is null || Compare(m, best, first) > 0)
+            {
+                best = m;
+                coefficient = c;
+            }
+        }
+        return new Term(coefficient, best!);
     }
 
     private static int Power(Monomial m, Atom atom)
@@ -62,10 +88,30 @@ internal static class PolynomialRemainder
     {
         var c = Power(a, first).CompareTo(Power(b, first));
         if (c != 0) return c;
-        var atoms = a.Factors.Select(f => f.Atom).Union(b.Factors.Select(f => f.Atom)).OrderByDescending(x => x);
-        foreach (var atom in atoms)
+        // Factors are sorted by atom, ascending: walking both lists from the end visits the union of
+        // their atoms in descending order, an atom missing from one side having power 0 there.
+        var x = a.Factors;
+        var y = b.Factors;
+        int i = x.Count - 1, j = y.Count - 1;
+        while (i >= 0 || j >= 0)
         {
-            c = Power(a, atom).CompareTo(Power(b, atom));
+            var order = i < 0 ? -1 : j < 0 ? 1 : Atom.Compare(x[i].Atom, y[j].Atom);
+            if (order > 0)
+            {
+                c = x[i].Power.CompareTo(0);
+                i--;
+            }
+            else if (order < 0)
+            {
+                c = 0.CompareTo(y[j].Power);
+                j--;
+            }
+            else
+            {
+                c = x[i].Power.CompareTo(y[j].Power);
+                i--;
+                j--;
+            }
             if (c != 0) return c;
         }
         return 0;
