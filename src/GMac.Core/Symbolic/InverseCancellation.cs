@@ -1,5 +1,3 @@
-using GMac.Core.Numerics;
-
 namespace GMac.Core.Symbolic;
 
 /// <summary>
@@ -101,91 +99,21 @@ public static class InverseCancellation
     {
         quotient = Scalar.Zero;
         if (Scalar.IsZero(s)) return false;
-        var lead = Leading(s.Terms);
-        // The remainder's terms by monomial (interned, so keys compare by reference): each step
-        // updates a few entries instead of building a new canonical sum.
-        var remainder = new Dictionary<Monomial, Rational>(b.Terms.Count * 2);
-        foreach (var t in b.Terms) remainder[t.Monomial] = t.Coefficient;
+        var lead = DivisionTerms.Leading(s.Terms, DivisionTerms.CompareDescendingAtoms);
+        var remainder = DivisionTerms.Table(b);
         var q = new List<Term>();
         for (var step = 0; step < MaxDivisionSteps && remainder.Count > 0; step++)
         {
-            var top = Leading(remainder);
+            var top = DivisionTerms.Leading(remainder, DivisionTerms.CompareDescendingAtoms);
             var factor = Divide(top.Monomial, lead.Monomial);
             if (factor is null) return false; // the leading term is not divisible: a remainder stays
             var t = new Term(top.Coefficient / lead.Coefficient, factor);
             q.Add(t);
-            // remainder −= t·s; the leading product cancels top exactly.
-            remainder.Remove(top.Monomial);
-            foreach (var u in s.Terms)
-            {
-                if (ReferenceEquals(u.Monomial, lead.Monomial)) continue;
-                var m = factor * u.Monomial;
-                var c = remainder.TryGetValue(m, out var have) ? have - t.Coefficient * u.Coefficient : -(t.Coefficient * u.Coefficient);
-                if (c.IsZero) remainder.Remove(m);
-                else remainder[m] = c;
-            }
+            DivisionTerms.SubtractMultiple(remainder, t, s, lead.Monomial, top.Monomial);
         }
         if (remainder.Count > 0) return false;
         quotient = Scalar.FromTerms(q);
         return true;
-    }
-
-    /// <summary>The greatest term in lexicographic order: the highest atom first, then its power.</summary>
-    private static Term Leading(IReadOnlyList<Term> terms)
-    {
-        var best = terms[0];
-        for (var i = 1; i < terms.Count; i++)
-            if (CompareLex(terms[i].Monomial, best.Monomial) > 0) best = terms[i];
-        return best;
-    }
-
-    private static Term Leading(Dictionary<Monomial, Rational> terms)
-    {
-        Monomial? best = null;
-        var coefficient = Rational.Zero;
-        foreach (var (m, c) in terms)
-        {
-            if (best is null || CompareLex(m, best) > 0)
-            {
-                best = m;
-                coefficient = c;
-            }
-        }
-        return new Term(coefficient, best!);
-    }
-
-    /// <summary>
-    /// Factors are sorted by atom, ascending: walking both lists from the end visits the union of
-    /// their atoms in descending order, an atom missing from one side having power 0 there.
-    /// </summary>
-    private static int CompareLex(Monomial a, Monomial b)
-    {
-        var x = a.Factors;
-        var y = b.Factors;
-        int i = x.Count - 1, j = y.Count - 1;
-        while (i >= 0 || j >= 0)
-        {
-            var order = i < 0 ? -1 : j < 0 ? 1 : Atom.Compare(x[i].Atom, y[j].Atom);
-            int c;
-            if (order > 0)
-            {
-                c = x[i].Power.CompareTo(0);
-                i--;
-            }
-            else if (order < 0)
-            {
-                c = 0.CompareTo(y[j].Power);
-                j--;
-            }
-            else
-            {
-                c = x[i].Power.CompareTo(y[j].Power);
-                i--;
-                j--;
-            }
-            if (c != 0) return c;
-        }
-        return 0;
     }
 
     /// <summary>m / d when every power of d is at most m's (as exponents may be negative, compare signed).</summary>

@@ -18,62 +18,29 @@ internal static class PolynomialRemainder
         quotient = Scalar.Zero;
         remainder = b;
         if (Scalar.IsZero(s) || Scalar.IsZero(b)) return false;
-        var lead = Leading(s.Terms, first);
-        // The dividend's remaining terms by monomial (monomials are interned, so keys compare by
-        // reference): each step updates a few entries instead of building a new canonical sum.
-        var rest = new Dictionary<Monomial, Rational>(b.Terms.Count * 2);
-        foreach (var t in b.Terms) rest[t.Monomial] = t.Coefficient;
+        int Order(Monomial x, Monomial y) => Compare(x, y, first);
+        var lead = DivisionTerms.Leading(s.Terms, Order);
+        var rest = DivisionTerms.Table(b);
         var q = new List<Term>();
         var r = new List<Term>();
         for (var step = 0; rest.Count > 0; step++)
         {
             if (step == MaxSteps) return false;
-            var top = Leading(rest, first);
+            var top = DivisionTerms.Leading(rest, Order);
             var factor = Divide(top.Monomial, lead.Monomial);
-            rest.Remove(top.Monomial);
             if (factor is null)
             {
                 r.Add(top);
+                rest.Remove(top.Monomial);
                 continue;
             }
             var t = new Term(top.Coefficient / lead.Coefficient, factor);
             q.Add(t);
-            // rest −= t·s; the leading product cancels top, already removed.
-            foreach (var u in s.Terms)
-            {
-                if (ReferenceEquals(u.Monomial, lead.Monomial)) continue;
-                var m = factor * u.Monomial;
-                var c = rest.TryGetValue(m, out var have) ? have - t.Coefficient * u.Coefficient : -(t.Coefficient * u.Coefficient);
-                if (c.IsZero) rest.Remove(m);
-                else rest[m] = c;
-            }
+            DivisionTerms.SubtractMultiple(rest, t, s, lead.Monomial, top.Monomial);
         }
         quotient = Scalar.FromTerms(q);
         remainder = Scalar.FromTerms(r);
         return true;
-    }
-
-    private static Term Leading(IReadOnlyList<Term> terms, Atom first)
-    {
-        var best = terms[0];
-        for (var i = 1; i < terms.Count; i++)
-            if (Compare(terms[i].Monomial, best.Monomial, first) > 0) best = terms[i];
-        return best;
-    }
-
-    private static Term Leading(Dictionary<Monomial, Rational> terms, Atom first)
-    {
-        Monomial? best = null;
-        var coefficient = Rational.Zero;
-        foreach (var (m, c) in terms)
-        {
-            if (best is null || Compare(m, best, first) > 0)
-            {
-                best = m;
-                coefficient = c;
-            }
-        }
-        return new Term(coefficient, best!);
     }
 
     private static int Power(Monomial m, Atom atom)
@@ -87,34 +54,7 @@ internal static class PolynomialRemainder
     private static int Compare(Monomial a, Monomial b, Atom first)
     {
         var c = Power(a, first).CompareTo(Power(b, first));
-        if (c != 0) return c;
-        // Factors are sorted by atom, ascending: walking both lists from the end visits the union of
-        // their atoms in descending order, an atom missing from one side having power 0 there.
-        var x = a.Factors;
-        var y = b.Factors;
-        int i = x.Count - 1, j = y.Count - 1;
-        while (i >= 0 || j >= 0)
-        {
-            var order = i < 0 ? -1 : j < 0 ? 1 : Atom.Compare(x[i].Atom, y[j].Atom);
-            if (order > 0)
-            {
-                c = x[i].Power.CompareTo(0);
-                i--;
-            }
-            else if (order < 0)
-            {
-                c = 0.CompareTo(y[j].Power);
-                j--;
-            }
-            else
-            {
-                c = x[i].Power.CompareTo(y[j].Power);
-                i--;
-                j--;
-            }
-            if (c != 0) return c;
-        }
-        return 0;
+        return c != 0 ? c : DivisionTerms.CompareDescendingAtoms(a, b);
     }
 
     /// <summary>m / d when d's powers do not exceed m's (only positive powers divide).</summary>
