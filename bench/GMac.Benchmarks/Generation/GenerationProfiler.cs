@@ -3,6 +3,7 @@ using GMac.Core.CodeGeneration;
 using GMac.Core.Symbolic;
 using GMac.Dsl;
 using GMac.Dsl.Generation;
+using RayTracer.Cli.Experiments;
 
 namespace GMac.Benchmarks.Generation;
 
@@ -22,8 +23,8 @@ public static class GenerationProfiler
 
         var (generator, directory) = Fresh(dslDirectory);
         var names = generator.MacroNames.Where(n => only is null || only.Contains(n)).ToArray();
-        var cpu = ThreadCpuClock.TryCreate();
-        if (cpu is not null) GenerationProfile.Clock = cpu;
+        var threadTime = ThreadCpuClock.IsThreadTime;
+        if (threadTime) GenerationProfile.Clock = ThreadCpuClock.NowMilliseconds;
         GenerationProfile.Reset();
         GenerationProfile.Enabled = true;
         var total = GenerationProfile.Time("all macros", () =>
@@ -35,7 +36,7 @@ public static class GenerationProfiler
         Delete(directory);
 
         static string F(double x) => x.ToString("0.0", CultureInfo.InvariantCulture);
-        output.WriteLine($"{names.Length} macros cold; times are {(cpu is null ? "wall" : "thread CPU")} milliseconds");
+        output.WriteLine($"{names.Length} macros cold; times are {(threadTime ? "thread CPU" : "wall")} milliseconds");
         output.WriteLine("| stage or pass | ms (inclusive) | MB allocated | calls |");
         output.WriteLine("|---|---:|---:|---:|");
         foreach (var (stage, t) in GenerationProfile.Snapshot().OrderByDescending(kv => kv.Value.Ms))

@@ -134,7 +134,7 @@ internal sealed class InstancingExperiment
     {
         var sr = new ShadingRecord(null);
         var sink = 0.0;
-        var start = InstancingCpuClock.NowMilliseconds();
+        var start = ThreadCpuClock.NowMilliseconds();
         foreach (ref readonly var test in CollectionsMarshal.AsSpan(log))
         {
             var tube = tubes[test.Tube];
@@ -155,7 +155,7 @@ internal sealed class InstancingExperiment
             }
         }
 
-        var elapsed = InstancingCpuClock.NowMilliseconds() - start;
+        var elapsed = ThreadCpuClock.NowMilliseconds() - start;
         // The sum is used so that no test can be dropped as dead code.
         return double.IsNaN(sink) ? double.NaN : elapsed;
     }

@@ -30,7 +30,7 @@ internal static class InstancingReport
             "shading and shadow tests), counted per method in a render on one thread that also records each call; instances " +
             "have looser bounding boxes (the box of the moved local box), so the hierarchy asks them more often. The test time " +
             "is the time of exactly those calls asked again of the bare tubes, in order, on one thread: the tests alone, " +
-            (InstancingCpuClock.IsThreadTime ? "in the thread's CPU time (time spent waiting for a core is not counted), " : "in wall time, ") +
+            (ThreadCpuClock.IsThreadTime ? "in the thread's CPU time (time spent waiting for a core is not counted), " : "in wall time, ") +
             "without traversal and shading. The render time is the wall time of one whole render of the bare tubes, for comparison " +
             "(it moves with the load of the machine). Memory is measured: ");
         md.AppendLine(Invariant($"{run.MemorySamples} and {2 * run.MemorySamples} tubes of the scene built and kept, the heap weighed after full collections before and after, ") +

@@ -222,7 +222,7 @@ public sealed class Gpcm(IParametricSurface surface, GpcmMapping mapping = GpcmM
             return CascadeRay(pp, vp, orientation, out ray);
         var scale = _scale;
         if (scale is null || !scale.Fits(vp))
-            _scale = scale = LensScale.For(Surface, lens, vp);
+            _scale = scale = LensScale.For(Surface, vp);
         return lens switch
         {
             GpcmLensKind.Rectangle => FromEye(LensKernels.Rectangle(pp.x * scale.X, pp.y * scale.Y, scale.Z, orientation), orientation, out ray),

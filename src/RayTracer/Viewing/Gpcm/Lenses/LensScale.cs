@@ -36,18 +36,19 @@ internal sealed class LensScale
     public bool Fits(ViewPlane vp) =>
         ReferenceEquals(vp, _plane) && vp.HorizontalResolution == _width && vp.VerticalResolution == _height && vp.PixelSize == _pixelSize;
 
-    public static LensScale For(object surface, GpcmLensKind lens, ViewPlane vp)
+    /// <summary>The factors of a lens that has a kernel (see <see cref="GpcmLensKinds.Of"/>).</summary>
+    public static LensScale For(object surface, ViewPlane vp)
     {
         var width = vp.HorizontalResolution * vp.PixelSize;
         var height = vp.VerticalResolution * vp.PixelSize;
-        return (lens, surface) switch
+        return surface switch
         {
-            (GpcmLensKind.Rectangle, RectangularProjectionSurface r) => new(vp, r.Width / width, r.Height / height, r.Distance),
-            (GpcmLensKind.Sphere, SphereLens s) => new(vp, 2 * s.MaxAzimuth / width, 2 * s.MaxElevation / height),
-            (GpcmLensKind.Cylinder, CylinderLens c) => new(vp, 2 * c.MaxAzimuth / width, c.Height / height),
-            (GpcmLensKind.Cone, ConeLens c) => new(vp, 2 * c.MaxAzimuth / width, c.Slant / height),
-            (GpcmLensKind.Cap, CapLens) => new(vp, width / 2, height / 2),
-            _ => throw new ArgumentException($"No lens kernel for {surface.GetType().Name} as {lens}.", nameof(lens)),
+            RectangularProjectionSurface r => new(vp, r.Width / width, r.Height / height, r.Distance),
+            SphereLens s => new(vp, 2 * s.MaxAzimuth / width, 2 * s.MaxElevation / height),
+            CylinderLens c => new(vp, 2 * c.MaxAzimuth / width, c.Height / height),
+            ConeLens c => new(vp, 2 * c.MaxAzimuth / width, c.Slant / height),
+            CapLens => new(vp, width / 2, height / 2),
+            _ => throw new ArgumentException($"No lens kernel for {surface.GetType().Name}.", nameof(surface)),
         };
     }
 }

@@ -8,7 +8,7 @@ namespace RayTracer.Cli.Experiments;
 /// so that time spent waiting for a core on a busy machine is not counted as test time; elsewhere
 /// the wall clock.
 /// </summary>
-internal static partial class InstancingCpuClock
+public static partial class ThreadCpuClock
 {
     private const int ThreadCpuTimeClock = 3;
 
