@@ -18,8 +18,8 @@ public sealed class RotorInterpolateKernel : GaKernel<RotorPair, Rotor3>
     public override OperationCount HandOperations => new(Additions: 8, Multiplications: 16, Divisions: 1, Calls: 4);
 
     /// <summary>
-    /// Unit rotors whose relative rotor R2 R1⁻¹ has a positive scalar part (the macro's logarithm takes
-    /// |⟨R⟩₀|, the short way round) and is not too close to the identity, where acos loses precision.
+    /// Unit rotors whose relative rotor R2 R1⁻¹ is not too close to ±1, where acos loses precision. Its
+    /// scalar part takes either sign: the macro's principal logarithm and slerp both go the way R1·R2 points.
     /// </summary>
     protected override RotorPair CreateInput(Random random)
     {
@@ -28,8 +28,7 @@ public sealed class RotorInterpolateKernel : GaKernel<RotorPair, Rotor3>
             var r1 = UnitRotor(random);
             var r2 = UnitRotor(random);
             var dot = r1.w * r2.w + r1.x * r2.x + r1.y * r2.y + r1.z * r2.z;
-            if (dot < 0) (r2, dot) = (new Rotor3(-r2.w, -r2.x, -r2.y, -r2.z), -dot);
-            if (dot is > 0.05 and < 0.995) return new RotorPair { R1 = r1, R2 = r2, Alpha = random.NextDouble() };
+            if (Math.Abs(dot) < 0.995) return new RotorPair { R1 = r1, R2 = r2, Alpha = random.NextDouble() };
         }
     }
 
@@ -80,7 +79,7 @@ public sealed class RotorInterpolateKernel : GaKernel<RotorPair, Rotor3>
         //GMac.Bind("r.e1^e2", "<r.z>");
         double tmp0 = p.R1.w * p.R2.w + p.R1.x * p.R2.x + p.R1.y * p.R2.y + p.R1.z * p.R2.z;
         double tmp1 = Math.Sqrt(1.0 - tmp0 * tmp0);
-        double tmp2 = p.Alpha * Math.Atan2(tmp1, Math.Abs(tmp0));
+        double tmp2 = Math.Atan2(tmp1, tmp0) * p.Alpha;
         var (tmp3, tmp5) = Math.SinCos(tmp2);
         double tmp4 = tmp3 / tmp1;
         double tmp6 = tmp5 - tmp0 * tmp4;
@@ -105,12 +104,12 @@ public sealed class RotorInterpolateKernel : GaKernel<RotorPair, Rotor3>
         return Scalar3(Math.Cos(phi)) + Math.Sin(phi) / phi * b;
     }
 
-    /// <summary>(7.11) log R = R₂/‖R₂‖ atan(‖R₂‖/‖R₀‖).</summary>
+    /// <summary>(7.11) log R = R₂/‖R₂‖ atan2(‖R₂‖, ⟨R⟩₀), the principal logarithm, as the library macro takes it.</summary>
     private static Multivector<double> RotorLog(Multivector<double> r)
     {
         var r2 = r.Grade(2);
         var n2 = r2.Norm();
-        return r2 / n2 * Math.Atan(n2 / r.Grade(0).Norm());
+        return r2 / n2 * Math.Atan2(n2, r.ScalarPart);
     }
 
     /// <summary>Slerp: (R2 R1⁻¹)^α R1 = [sin((1 − α)Ω) R1 + sin(αΩ) R2] / sin Ω with cos Ω = R1·R2.</summary>

@@ -115,6 +115,32 @@ public sealed class LibraryMacros_Geometry
         Assert.Equal(values[$"{prefix}.e2_e3"], r["e2^e3"], 7);
     }
 
+    [Theory]
+    [InlineData(0.5)]
+    [InlineData(1.0)]
+    public void Rotor_interpolation_follows_slerp_when_the_relative_rotor_has_a_negative_scalar_part(double alpha)
+    {
+        // R1·R2 = cos 0.3 cos 2.2 + sin 0.3 sin 2.2 · 0.6 < 0: the relative rotor turns by more than π/2.
+        double[] r1 = [Math.Cos(0.3), Math.Sin(0.3), 0, 0];
+        double[] r2 = [Math.Cos(2.2), 0.6 * Math.Sin(2.2), 0.8 * Math.Sin(2.2), 0];
+        var values = new Dictionary<string, double>
+        {
+            ["r1.scalar"] = r1[0], ["r1.e1_e2"] = r1[1], ["r1.e2_e3"] = r1[2], ["r1.e1_e3"] = r1[3],
+            ["r2.scalar"] = r2[0], ["r2.e1_e2"] = r2[1], ["r2.e2_e3"] = r2[2], ["r2.e1_e3"] = r2[3],
+            ["alpha.scalar"] = alpha,
+        };
+        var dot = r1.Zip(r2, (a, b) => a * b).Sum();
+        Assert.True(dot < 0);
+        var omega = Math.Acos(dot);
+        var w1 = Math.Sin((1 - alpha) * omega) / Math.Sin(omega);
+        var w2 = Math.Sin(alpha * omega) / Math.Sin(omega);
+        var r = Run("RotorInterpolate", values)["r"];
+        Assert.Equal(w1 * r1[0] + w2 * r2[0], r.ScalarPart, 9);
+        Assert.Equal(w1 * r1[1] + w2 * r2[1], r["e1^e2"], 9);
+        Assert.Equal(w1 * r1[2] + w2 * r2[2], r["e2^e3"], 9);
+        Assert.Equal(w1 * r1[3] + w2 * r2[3], r["e1^e3"], 9);
+    }
+
     [Fact]
     public void Sphere_through_four_points_has_their_center_and_radius()
     {

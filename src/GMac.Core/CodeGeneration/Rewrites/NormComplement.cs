@@ -3,10 +3,11 @@ using GMac.Core.Symbolic;
 namespace GMac.Core.CodeGeneration.Rewrites;
 
 /// <summary>
-/// √P where P + u² reduces to a constant c under the side relations, and the block also reads |u|:
-/// u is named once and the root reads √(c − u²). For a unit rotor Q = R₂R̃₁ this is
-/// ‖⟨Q⟩₂‖ = √(1 − ⟨Q⟩₀²), which the canonical form otherwise writes as the expanded sum of squares
-/// of the bivector part reduced by the unit constraints, a polynomial of dozens of terms.
+/// √P where P + u² reduces to a constant c under the side relations, and the block also reads u
+/// whole, as the argument of |u| or of atan2: u is named once and the root reads √(c − u²). For a
+/// unit rotor Q = R₂R̃₁ this is ‖⟨Q⟩₂‖ = √(1 − ⟨Q⟩₀²), which the canonical form otherwise writes as
+/// the expanded sum of squares of the bivector part reduced by the unit constraints, a polynomial
+/// of dozens of terms.
 /// </summary>
 internal static class NormComplement
 {
@@ -14,16 +15,16 @@ internal static class NormComplement
 
     public static void Apply(List<SymbolicInliner.Assignment> assignments, Func<Scalar, Scalar> simplify)
     {
-        var absolutes = new List<Atom>();
+        var reads = new Dictionary<Scalar, List<Atom>>(); // each u with the atoms reading it whole
         var roots = new List<Atom>();
-        foreach (var a in assignments) Collect(a.Value, absolutes, roots, new HashSet<Atom>());
-        if (absolutes.Count == 0 || roots.Count == 0 || absolutes.Count * roots.Count > MaxPairs) return;
+        foreach (var a in assignments) Collect(a.Value, reads, roots, new HashSet<Atom>());
+        if (reads.Count == 0 || roots.Count == 0 || reads.Count * roots.Count > MaxPairs) return;
 
         var replacements = new Dictionary<Atom, Scalar>();
-        var named = new List<(string Name, Scalar Value, Atom Absolute)>();
-        foreach (var absolute in absolutes)
+        var named = new List<(string Name, Scalar Value)>();
+        var renamedReads = new List<(Atom Reader, Scalar U, Scalar T)>();
+        foreach (var (u, readers) in reads)
         {
-            var u = absolute.ArgumentArray[0];
             string? name = null;
             foreach (var root in roots)
             {
@@ -36,24 +37,35 @@ internal static class NormComplement
                 if (name is null)
                 {
                     name = t.Variables.First();
-                    named.Add((name, u, absolute));
-                    replacements[absolute] = Scalar.Abs(t);
+                    named.Add((name, u));
+                    foreach (var reader in readers) renamedReads.Add((reader, u, t));
                 }
                 replacements[root] = Scalar.Sqrt(complement);
             }
         }
         if (named.Count == 0) return;
+        // readers last: their other arguments may hold a replaced root (atan2(√P, u))
+        var rootsOnly = new Dictionary<Atom, Scalar>();
+        foreach (var (reader, u, t) in renamedReads) replacements[reader] = Reading(reader, u, t, replacements, rootsOnly);
 
         var memo = new Dictionary<Atom, Scalar>();
         foreach (var a in assignments)
             a.Value = Scalar.MapAtoms(a.Value, atom => replacements.GetValueOrDefault(atom), memo);
         // Each name goes right before the first value that reads it, where all that u reads is known.
-        foreach (var (name, value, _) in named)
+        foreach (var (name, value) in named)
         {
             foreach (var a in assignments) a.Value = Reuse(a.Value, value, Scalar.Variable(name), simplify);
             var first = assignments.FindIndex(a => a.Value.Variables.Contains(name));
             assignments.Insert(first < 0 ? 0 : first, new SymbolicInliner.Assignment(name, value, false));
         }
+    }
+
+    /// <summary>The reading atom with its argument u replaced by the name t, and the roots in its other arguments replaced.</summary>
+    private static Scalar Reading(Atom reader, Scalar u, Scalar t, Dictionary<Atom, Scalar> roots, Dictionary<Atom, Scalar> memo)
+    {
+        var a = reader.ArgumentArray;
+        Scalar Swap(Scalar x) => ReferenceEquals(x, u) ? t : Scalar.MapAtoms(x, atom => atom.Kind == AtomKind.Sqrt ? roots.GetValueOrDefault(atom) : null, memo);
+        return reader.Kind == AtomKind.Abs ? Scalar.Abs(t) : Scalar.Atan2(Swap(a[0]), Swap(a[1]));
     }
 
     /// <summary>
@@ -76,18 +88,23 @@ internal static class NormComplement
         return best;
     }
 
-    /// <summary>Atoms |u| and √P with u and P sums, at any depth.</summary>
-    private static void Collect(Scalar s, List<Atom> absolutes, List<Atom> roots, HashSet<Atom> seen)
+    /// <summary>Sums read whole by |u| or atan2, and roots √P of sums, at any depth.</summary>
+    private static void Collect(Scalar s, Dictionary<Scalar, List<Atom>> reads, List<Atom> roots, HashSet<Atom> seen)
     {
         foreach (var term in s.Terms)
         foreach (var factor in term.Monomial.Factors)
         {
             var atom = factor.Atom;
             if (!seen.Add(atom)) continue;
-            foreach (var argument in atom.Arguments) Collect(argument, absolutes, roots, seen);
-            if (atom.Arguments.Count != 1 || atom.Arguments[0].Terms.Count < 2) continue;
-            if (atom.Kind == AtomKind.Abs && !absolutes.Contains(atom)) absolutes.Add(atom);
-            if (atom.Kind == AtomKind.Sqrt && !roots.Contains(atom)) roots.Add(atom);
+            foreach (var argument in atom.Arguments) Collect(argument, reads, roots, seen);
+            if (atom.Kind == AtomKind.Sqrt && atom.Arguments[0].Terms.Count >= 2) roots.Add(atom);
+            if (atom.Kind is not (AtomKind.Abs or AtomKind.Atan2)) continue;
+            foreach (var argument in atom.Arguments)
+            {
+                if (argument.Terms.Count < 2) continue;
+                if (!reads.TryGetValue(argument, out var readers)) reads[argument] = readers = [];
+                if (!readers.Contains(atom)) readers.Add(atom);
+            }
         }
     }
 
