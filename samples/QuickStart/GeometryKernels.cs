@@ -64,15 +64,15 @@ public static class GeometryKernels
         double tmp16 = b.y - a.y;
         double tmp17 = b.z - a.z;
         double tmp18 = 0.5 * (b.x * b.x + b.y * b.y + b.z * b.z - tmp3);
-        double tmp19 = tmp11 * tmp15 + tmp17 * tmp9 - tmp16 * tmp10;
+        double tmp19 = tmp16 * tmp10 - (tmp11 * tmp15 + tmp17 * tmp9);
         double tmp20 = tmp13 * tmp15 + tmp18 * tmp9 - tmp12 * tmp16;
         double tmp21 = tmp14 * tmp15 + tmp18 * tmp10 - tmp12 * tmp17;
         double tmp22 = tmp11 * tmp18 + tmp14 * tmp16 - tmp13 * tmp17;
-        sNo = -tmp19;
+        sNo = tmp19;
         sX = -tmp22;
         sY = tmp21;
         sZ = -tmp20;
-        sNi = 0.5 * tmp19 * tmp3 + tmp21 * a.y - tmp20 * a.z - tmp22 * a.x;
+        sNi = tmp21 * a.y - 0.5 * tmp19 * tmp3 - tmp20 * a.z - tmp22 * a.x;
         #endregion
 
         var centre = new Vec3(sX / sNo, sY / sNo, sZ / sNo);
@@ -99,15 +99,15 @@ public static class GeometryKernels
         double tmp2 = Math.Sqrt(tmp1);
         var (tmp8, tmp3) = Math.SinCos(angle);
         double tmp4 = 1.0 - tmp3;
-        double tmp5 = through.y - point.y;
-        double tmp6 = through.x - point.x;
+        double tmp5 = point.y - through.y;
+        double tmp6 = point.x - through.x;
         double tmp7 = point.z - through.z;
-        double tmp9 = -(tmp2 * tmp5);
+        double tmp9 = tmp2 * tmp5;
         double tmp10 = tmp2 * tmp7;
-        double tmp11 = (tmp7 * axis.z - axis.x * tmp6 - axis.y * tmp5) * tmp1;
-        result.x = tmp8 * (axis.y * tmp10 - axis.z * tmp9) + point.x - tmp4 * (-(axis.x * tmp11) - tmp6);
-        double tmp12 = -(tmp2 * tmp6);
-        result.y = tmp8 * (axis.z * tmp12 - axis.x * tmp10) + point.y - tmp4 * (-(axis.y * tmp11) - tmp5);
+        double tmp11 = (tmp7 * axis.z + axis.x * tmp6 + axis.y * tmp5) * tmp1;
+        result.x = tmp8 * (axis.y * tmp10 - axis.z * tmp9) + point.x - tmp4 * (tmp6 - axis.x * tmp11);
+        double tmp12 = tmp2 * tmp6;
+        result.y = tmp8 * (axis.z * tmp12 - axis.x * tmp10) + point.y - tmp4 * (tmp5 - axis.y * tmp11);
         result.z = tmp8 * (axis.x * tmp9 - axis.y * tmp12) + point.z - tmp4 * (tmp7 - axis.z * tmp11);
         #endregion
 

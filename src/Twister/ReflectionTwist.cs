@@ -37,7 +37,7 @@ public sealed class ReflectionTwist : Twist
         //GMac.Bind("y", "Vector3D", y);
         double tmp0 = n.y * (p.y - point.y) + n.z * (p.z - point.z) - point.x * n.x;
         y.x = p.x * (2.0 * (n.y * n.y + n.z * n.z) - 1.0) - 2.0 * n.x * tmp0;
-        double tmp1 = 2.0 * (-(p.x * n.x) - tmp0);
+        double tmp1 = -2.0 * (p.x * n.x + tmp0);
         y.y = n.y * tmp1 + p.y;
         y.z = n.z * tmp1 + p.z;
         #endregion
@@ -58,7 +58,7 @@ public sealed class ReflectionTwist : Twist
         //GMac.Bind("y", "Vector3D", y);
         double tmp0 = d.z * n.z + d.y * n.y;
         y.x = d.x * (2.0 * (n.y * n.y + n.z * n.z) - 1.0) - 2.0 * n.x * tmp0;
-        double tmp1 = 2.0 * (-(d.x * n.x) - tmp0);
+        double tmp1 = -2.0 * (d.x * n.x + tmp0);
         y.y = n.y * tmp1 + d.y;
         y.z = n.z * tmp1 + d.z;
         #endregion
@@ -78,10 +78,10 @@ public sealed class ReflectionTwist : Twist
         //GMac.Bind("b", "Bivector3D", b);
         //GMac.Bind("y", "Bivector3D", y);
         double tmp0 = b.zx * n.y + b.xy * n.z;
-        double tmp1 = 2.0 * (-(b.yz * n.x) - tmp0);
-        y.xy = -(n.z * tmp1) - b.xy;
+        double tmp1 = 2.0 * (b.yz * n.x + tmp0);
+        y.xy = n.z * tmp1 - b.xy;
         y.yz = b.yz * (1.0 - 2.0 * (n.y * n.y + n.z * n.z)) + 2.0 * n.x * tmp0;
-        y.zx = -(n.y * tmp1) - b.zx;
+        y.zx = n.y * tmp1 - b.zx;
         #endregion
 
         return y;

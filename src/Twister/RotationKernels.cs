@@ -41,10 +41,10 @@ internal static class RotationKernels
         var (tmp2, tmp0) = Math.SinCos(angle);
         double tmp1 = tmp0 - 1.0;
         double tmp3 = b.xy * axis.z + b.zx * axis.y;
-        double tmp4 = -(b.yz * axis.x) - tmp3;
-        y.xy = tmp2 * (axis.x * b.zx - axis.y * b.yz) + b.xy + tmp1 * (axis.z * tmp4 + b.xy);
+        double tmp4 = b.yz * axis.x + tmp3;
+        y.xy = tmp2 * (axis.x * b.zx - axis.y * b.yz) + b.xy + tmp1 * (b.xy - axis.z * tmp4);
         y.yz = tmp2 * (axis.y * b.xy - axis.z * b.zx) + b.yz + tmp1 * (b.yz * (axis.y * axis.y + axis.z * axis.z) - axis.x * tmp3);
-        y.zx = tmp2 * (axis.z * b.yz - axis.x * b.xy) + b.zx + tmp1 * (axis.y * tmp4 + b.zx);
+        y.zx = tmp2 * (axis.z * b.yz - axis.x * b.xy) + b.zx + tmp1 * (b.zx - axis.y * tmp4);
         #endregion
 
         return y;

@@ -58,17 +58,17 @@ public sealed class ApplyTwistToPoint3DKernel : GaKernel<TwistInput, Vec3>
         double tmp1 = 1.0 / tmp0;
         double tmp2 = Math.Sqrt(tmp1);
         var (tmp8, tmp3) = Math.SinCos(x.Angle);
-        double tmp4 = 1.0 - tmp3;
+        double tmp4 = tmp3 - 1.0;
         double tmp5 = x.Origin.x - x.Point.x;
-        double tmp6 = x.Origin.z - x.Point.z;
+        double tmp6 = x.Point.z - x.Origin.z;
         double tmp7 = x.Point.y - x.Origin.y;
-        double tmp9 = -(tmp2 * tmp7);
-        double tmp10 = -(tmp2 * tmp6);
-        double tmp11 = (tmp7 * x.Axis.y - tmp6 * x.Axis.z - x.Axis.x * tmp5) * tmp1;
-        p.x = tmp8 * (x.Axis.y * tmp10 + x.Axis.z * tmp9) + x.Axis.x * x.Slide + x.Point.x - tmp4 * (-(x.Axis.x * tmp11) - tmp5);
+        double tmp9 = tmp2 * tmp7;
+        double tmp10 = tmp2 * tmp6;
+        double tmp11 = (tmp7 * x.Axis.y + tmp6 * x.Axis.z - x.Axis.x * tmp5) * tmp1;
+        p.x = tmp8 * (x.Axis.y * tmp10 - x.Axis.z * tmp9) + x.Axis.x * x.Slide + x.Point.x - tmp4 * (x.Axis.x * tmp11 + tmp5);
         double tmp12 = tmp2 * tmp5;
-        p.y = tmp8 * (-(x.Axis.x * tmp10) - x.Axis.z * tmp12) + x.Axis.y * x.Slide + x.Point.y - tmp4 * (tmp7 - x.Axis.y * tmp11);
-        p.z = tmp8 * (x.Axis.y * tmp12 - x.Axis.x * tmp9) + x.Point.z + x.Axis.z * x.Slide - tmp4 * (-(x.Axis.z * tmp11) - tmp6);
+        p.y = tmp4 * (tmp7 - x.Axis.y * tmp11) - (tmp8 * (x.Axis.x * tmp10 + x.Axis.z * tmp12) - x.Axis.y * x.Slide - x.Point.y);
+        p.z = tmp8 * (x.Axis.y * tmp12 + x.Axis.x * tmp9) + x.Point.z + x.Axis.z * x.Slide + tmp4 * (tmp6 - x.Axis.z * tmp11);
         #endregion
     }
 

@@ -47,19 +47,19 @@ public sealed class GramSchmidtContractionKernel : GaKernel<Vec3Triple, Vec3Trip
         //GMac.Bind("w1", "Vector3D", "w.A");
         //GMac.Bind("w2", "Vector3D", "w.B");
         //GMac.Bind("w3", "Vector3D", "w.C");
-        double tmp0 = v.A.x * v.B.y - v.A.y * v.B.x;
+        double tmp0 = v.A.y * v.B.x - v.A.x * v.B.y;
         double tmp1 = v.A.x * v.B.z - v.A.z * v.B.x;
-        double tmp2 = v.A.y * v.B.z - v.A.z * v.B.y;
-        double tmp3 = tmp0 * v.C.z + tmp2 * v.C.x - tmp1 * v.C.y;
+        double tmp2 = v.A.z * v.B.y - v.A.y * v.B.z;
+        double tmp3 = -(tmp0 * v.C.z) - tmp2 * v.C.x - tmp1 * v.C.y;
         w.A.x = v.A.x;
         w.A.y = v.A.y;
         w.A.z = v.A.z;
-        w.B.x = -(tmp0 * v.A.y) - tmp1 * v.A.z;
-        w.B.y = tmp0 * v.A.x - tmp2 * v.A.z;
-        w.B.z = tmp1 * v.A.x + tmp2 * v.A.y;
-        w.C.x = -(tmp2 * tmp3);
+        w.B.x = tmp0 * v.A.y - tmp1 * v.A.z;
+        w.B.y = tmp2 * v.A.z - tmp0 * v.A.x;
+        w.B.z = tmp1 * v.A.x - tmp2 * v.A.y;
+        w.C.x = tmp2 * tmp3;
         w.C.y = tmp1 * tmp3;
-        w.C.z = -(tmp0 * tmp3);
+        w.C.z = tmp0 * tmp3;
         #endregion
     }
 

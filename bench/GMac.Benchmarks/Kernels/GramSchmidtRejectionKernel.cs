@@ -58,25 +58,25 @@ public sealed class GramSchmidtRejectionKernel : GaKernel<Vec3Triple, Vec3Triple
         double tmp5 = v.B.z * v.A.z;
         double tmp6 = v.B.y * v.A.y;
         double tmp7 = tmp1 + tmp0;
-        double tmp8 = (v.B.x * tmp7 + v.A.x * (-tmp6 - tmp5)) * tmp4;
+        double tmp8 = (v.B.x * tmp7 - v.A.x * (tmp6 + tmp5)) * tmp4;
         double tmp9 = v.B.x * v.A.x;
         double tmp10 = tmp0 + tmp2;
-        double tmp11 = (v.B.y * tmp10 + v.A.y * (-tmp9 - tmp5)) * tmp4;
-        double tmp12 = (v.B.z * tmp3 + v.A.z * (-tmp9 - tmp6)) * tmp4;
-        double tmp13 = v.A.y * tmp8 - v.A.x * tmp11;
+        double tmp11 = (v.B.y * tmp10 - v.A.y * (tmp9 + tmp5)) * tmp4;
+        double tmp12 = (v.B.z * tmp3 - v.A.z * (tmp9 + tmp6)) * tmp4;
+        double tmp13 = v.A.x * tmp11 - v.A.y * tmp8;
         double tmp14 = v.A.z * tmp8 - v.A.x * tmp12;
         double tmp15 = v.A.y * tmp12;
-        double tmp16 = v.A.z * tmp11 - tmp15;
+        double tmp16 = tmp15 - v.A.z * tmp11;
         w.A.x = v.A.x;
         w.A.y = v.A.y;
         w.A.z = v.A.z;
         w.B.x = tmp8;
         w.B.y = tmp11;
         w.B.z = tmp12;
-        double tmp17 = (v.C.y * tmp14 - v.C.x * tmp16 - v.C.z * tmp13) / (tmp8 * (tmp8 * tmp7 - 2.0 * v.A.x * (tmp11 * v.A.y + tmp12 * v.A.z)) + tmp11 * (tmp11 * tmp10 - 2.0 * v.A.z * tmp15) + tmp12 * tmp12 * tmp3);
-        w.C.x = -(tmp16 * tmp17);
+        double tmp17 = (v.C.y * tmp14 + v.C.x * tmp16 + v.C.z * tmp13) / (tmp8 * (tmp8 * tmp7 - 2.0 * v.A.x * (tmp11 * v.A.y + tmp12 * v.A.z)) + tmp11 * (tmp11 * tmp10 - 2.0 * v.A.z * tmp15) + tmp12 * tmp12 * tmp3);
+        w.C.x = tmp16 * tmp17;
         w.C.y = tmp14 * tmp17;
-        w.C.z = -(tmp13 * tmp17);
+        w.C.z = tmp13 * tmp17;
         #endregion
     }
 

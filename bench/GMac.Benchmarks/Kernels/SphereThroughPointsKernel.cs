@@ -73,15 +73,15 @@ public sealed class SphereThroughPointsKernel : GaKernel<Vec3Quad, DualSphere>
         double tmp16 = q.P2.y - q.P1.y;
         double tmp17 = q.P2.z - q.P1.z;
         double tmp18 = 0.5 * (q.P2.x * q.P2.x + q.P2.y * q.P2.y + q.P2.z * q.P2.z - tmp3);
-        double tmp19 = tmp11 * tmp15 + tmp17 * tmp9 - tmp16 * tmp10;
+        double tmp19 = tmp16 * tmp10 - (tmp11 * tmp15 + tmp17 * tmp9);
         double tmp20 = tmp13 * tmp15 + tmp18 * tmp9 - tmp12 * tmp16;
         double tmp21 = tmp14 * tmp15 + tmp18 * tmp10 - tmp12 * tmp17;
         double tmp22 = tmp11 * tmp18 + tmp14 * tmp16 - tmp13 * tmp17;
-        s.No = -tmp19;
+        s.No = tmp19;
         s.E1 = -tmp22;
         s.E2 = tmp21;
         s.E3 = -tmp20;
-        s.Ni = 0.5 * tmp19 * tmp3 + tmp21 * q.P1.y - tmp20 * q.P1.z - tmp22 * q.P1.x;
+        s.Ni = tmp21 * q.P1.y - 0.5 * tmp19 * tmp3 - tmp20 * q.P1.z - tmp22 * q.P1.x;
         #endregion
     }
 

@@ -65,8 +65,9 @@ public static class ExprPrinter
                     }
                     else
                     {
+                        // a nested sum after the first term keeps its own evaluation order: a + (b + c)
                         sb.Append(" + ");
-                        WriteOperand(sb, t, SumLevel, variableText, functionName, literal);
+                        WriteOperand(sb, t, SumLevel + 1, variableText, functionName, literal);
                     }
                 }
                 break;

@@ -115,7 +115,7 @@ public static class PluckerTriangleSolver
         double t0 = a.x - b.x;
         double t1 = a.y - b.y;
         double t2 = a.z - b.z;
-        tn = -((c.x - a.x) * (t1 * a.z - t2 * a.y) + (c.y - a.y) * (t2 * a.x - t0 * a.z) + (c.z - a.z) * (t0 * a.y - t1 * a.x));
+        tn = (a.x - c.x) * (t1 * a.z - t2 * a.y) - (c.y - a.y) * (t2 * a.x - t0 * a.z) - (c.z - a.z) * (t0 * a.y - t1 * a.x);
         #endregion
 
         return Finish(d1, d2, d3, tn, tMax, out beta, out gamma);

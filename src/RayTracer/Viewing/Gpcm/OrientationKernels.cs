@@ -15,14 +15,14 @@ internal static class OrientationKernels
         //GMac.Bind("b", "Vector3D", b);
         //GMac.Bind("r", "Rotor3D", r);
         double tmp0 = a.y * b.x - a.x * b.y;
-        double tmp1 = a.z * b.x - a.x * b.z;
+        double tmp1 = a.x * b.z - a.z * b.x;
         double tmp2 = a.z * b.y - a.y * b.z;
         double tmp3 = a.x * b.x + a.y * b.y + a.z * b.z + 1.0;
         double tmp4 = 1.0 / Math.Sqrt(tmp0 * tmp0 + tmp1 * tmp1 + tmp2 * tmp2 + tmp3 * tmp3);
         r.s = tmp3 * tmp4;
         r.xy = tmp0 * tmp4;
         r.yz = tmp2 * tmp4;
-        r.zx = -(tmp1 * tmp4);
+        r.zx = tmp1 * tmp4;
         #endregion
 
         return r;
@@ -55,11 +55,11 @@ internal static class OrientationKernels
         //GMac.Bind("n", "Vector3D", n);
         //GMac.Bind("p", "Vector3D", p);
         double tmp0 = d.x * n.y - d.y * n.x;
-        double tmp1 = d.x * n.z - d.z * n.x;
+        double tmp1 = d.z * n.x - d.x * n.z;
         double tmp2 = d.y * n.z - d.z * n.y;
-        p.x = tmp0 * n.y + tmp1 * n.z;
+        p.x = tmp0 * n.y - tmp1 * n.z;
         p.y = tmp2 * n.z - tmp0 * n.x;
-        p.z = -(tmp1 * n.x) - tmp2 * n.y;
+        p.z = tmp1 * n.x - tmp2 * n.y;
         #endregion
 
         return p;

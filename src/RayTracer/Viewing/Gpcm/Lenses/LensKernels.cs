@@ -57,10 +57,10 @@ internal static class LensKernels
         var (tmp0, tmp1) = Math.SinCos(elevation);
         var (tmp2, tmp4) = Math.SinCos(azimuth);
         double tmp3 = tmp1 * tmp2;
-        double tmp5 = -(tmp1 * tmp4);
-        d.x = tmp0 * up.x + tmp3 * right.x + tmp5 * back.x;
-        d.y = tmp0 * up.y + tmp3 * right.y + tmp5 * back.y;
-        d.z = tmp0 * up.z + tmp3 * right.z + tmp5 * back.z;
+        double tmp5 = tmp1 * tmp4;
+        d.x = tmp0 * up.x + tmp3 * right.x - tmp5 * back.x;
+        d.y = tmp0 * up.y + tmp3 * right.y - tmp5 * back.y;
+        d.z = tmp0 * up.z + tmp3 * right.z - tmp5 * back.z;
         #endregion
 
         return d;
@@ -88,10 +88,10 @@ internal static class LensKernels
         var (tmp2, tmp5) = Math.SinCos(azimuth);
         double tmp3 = tmp2 * tmp1;
         double tmp4 = height * tmp0;
-        double tmp6 = -(tmp5 * tmp1);
-        d.x = tmp3 * right.x + tmp4 * up.x + tmp6 * back.x;
-        d.y = tmp3 * right.y + tmp4 * up.y + tmp6 * back.y;
-        d.z = tmp3 * right.z + tmp4 * up.z + tmp6 * back.z;
+        double tmp6 = tmp5 * tmp1;
+        d.x = tmp3 * right.x + tmp4 * up.x - tmp6 * back.x;
+        d.y = tmp3 * right.y + tmp4 * up.y - tmp6 * back.y;
+        d.z = tmp3 * right.z + tmp4 * up.z - tmp6 * back.z;
         #endregion
 
         return d;
