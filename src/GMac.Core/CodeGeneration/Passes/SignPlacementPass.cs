@@ -37,7 +37,13 @@ public sealed class SignPlacementPass : IOptimizerPass
         {
             if (!flipped.Remove(name)) flipped.Add(name);
         }
-        int Cost(int i) => Rewrite(statements[i], IsFlipped).Cost;
+        int Cost(int i)
+        {
+            var negative = statements[i] is AssignmentStatement { IsOutput: false } t && IsFlipped(t.Target);
+            var cost = 0;
+            foreach (var e in statements[i].Expressions) cost += SignCost.Of(e, negative, IsFlipped);
+            return cost;
+        }
         var costs = Enumerable.Range(0, statements.Count).Select(Cost).ToArray();
 
         for (var round = 0; round < MaxRounds; round++)
@@ -46,6 +52,7 @@ public sealed class SignPlacementPass : IOptimizerPass
             foreach (var name in candidates)
             {
                 var affected = readers[name].Append(definitions[name]).Distinct().ToArray();
+                if (affected.All(i => costs[i] == 0)) continue; // no negation there to save
                 Toggle(name);
                 var newCosts = affected.Select(Cost).ToArray();
                 var gain = affected.Select((i, k) => costs[i] - newCosts[k]).Sum();
