@@ -57,25 +57,29 @@ internal readonly record struct SignCost(bool Negative, bool Flexible, bool IsCo
     /// <summary>The four printable arrangements of <see cref="SignedForm"/>'s sums, in the same order.</summary>
     private static SignCost AnalyzeSum(SumExpr s, Func<string, bool> isFlipped)
     {
-        var terms = new SignCost[s.Children.Count];
+        var children = s.Children;
+        var terms = children.Count <= 16 ? stackalloc SignCost[children.Count] : new SignCost[children.Count];
         var n = 0;
-        foreach (var pass in new[] { false, true }) // the printer's order: positive terms first
-            foreach (var t in s.Children)
-                if (IsNegativeTerm(t) == pass) terms[n++] = Analyze(t, isFlipped);
         var cost = 0;
-        foreach (var t in terms) cost += t.Cost;
-        foreach (var negative in new[] { false, true })
-        foreach (var swap in new[] { false, true })
+        for (var pass = 0; pass < 2; pass++) // the printer's order: positive terms first
+            foreach (var t in children)
+                if (IsNegativeTerm(t) == (pass == 1))
+                {
+                    terms[n] = Analyze(t, isFlipped);
+                    cost += terms[n++].Cost;
+                }
+        for (var arrangement = 0; arrangement < 4; arrangement++)
         {
+            var (negative, swap) = (arrangement >= 2, arrangement % 2 == 1);
             if (!Printable(terms, negative, swap, out var mixed)) continue;
             // a mixed sum negates as n − (rest); an all-positive one through its first or second term
-            var flexible = mixed || terms.Take(2).Any(t => !t.IsConstant && t.Flexible);
+            var flexible = mixed || (!terms[0].IsConstant && terms[0].Flexible) || (!terms[1].IsConstant && terms[1].Flexible);
             return new SignCost(negative, flexible, false, cost);
         }
         return new SignCost(false, false, false, cost + SignedForm.Unprintable);
     }
 
-    private static bool Printable(SignCost[] terms, bool negative, bool swap, out bool mixed)
+    private static bool Printable(ReadOnlySpan<SignCost> terms, bool negative, bool swap, out bool mixed)
     {
         bool seenNegative = false, seenPositive = false;
         for (var i = 0; i < terms.Length; i++)

@@ -23,14 +23,6 @@ public sealed class SignPlacementPass : IOptimizerPass
         for (var i = 0; i < statements.Count; i++)
             if (statements[i] is AssignmentStatement { IsOutput: false } t && !definitions.TryAdd(t.Target, i))
                 assignedTwice.Add(t.Target);
-        // A sine or cosine temporary stays as it is: the emitter pairs those into one Math.SinCos.
-        var candidates = definitions.Where(d => !assignedTwice.Contains(d.Key) && ((AssignmentStatement)statements[d.Value]).Value is not CallExpr)
-            .OrderBy(d => d.Value).Select(d => d.Key).ToList();
-        var readers = candidates.ToDictionary(c => c, _ => new List<int>(), StringComparer.Ordinal);
-        for (var i = 0; i < statements.Count; i++)
-        foreach (var name in statements[i].Expressions.SelectMany(e => e.DescendantsAndSelf()).OfType<VariableExpr>().Select(v => v.Name).Distinct())
-            if (readers.TryGetValue(name, out var list)) list.Add(i);
-
         var flipped = new HashSet<string>(StringComparer.Ordinal);
         bool IsFlipped(string name) => flipped.Contains(name);
         void Toggle(string name)
@@ -44,14 +36,15 @@ public sealed class SignPlacementPass : IOptimizerPass
             foreach (var e in statements[i].Expressions) cost += SignCost.Of(e, negative, IsFlipped);
             return cost;
         }
-        var costs = Enumerable.Range(0, statements.Count).Select(Cost).ToArray();
+        var costs = new int[statements.Count];
+        for (var i = 0; i < costs.Length; i++) costs[i] = Cost(i);
+        var readers = costs.Any(c => c > 0) ? Readers(statements, definitions, assignedTwice) : [];
 
-        for (var round = 0; round < MaxRounds; round++)
+        for (var round = 0; round < MaxRounds && readers.Count > 0; round++)
         {
             var improved = false;
-            foreach (var name in candidates)
+            foreach (var (name, affected) in readers)
             {
-                var affected = readers[name].Append(definitions[name]).Distinct().ToArray();
                 if (affected.All(i => costs[i] == 0)) continue; // no negation there to save
                 Toggle(name);
                 var newCosts = affected.Select(Cost).ToArray();
@@ -66,7 +59,7 @@ public sealed class SignPlacementPass : IOptimizerPass
             if (!improved) break;
         }
 
-        var touched = flipped.SelectMany(n => readers[n].Append(definitions[n])).ToHashSet();
+        var touched = readers.Where(r => flipped.Contains(r.Name)).SelectMany(r => r.Statements).ToHashSet();
         var changed = false;
         var result = statements.Select((s, i) =>
         {
@@ -75,6 +68,32 @@ public sealed class SignPlacementPass : IOptimizerPass
             return Rewrite(s, IsFlipped).Statement;
         }).ToArray();
         return changed ? block.WithStatements(result) : block;
+    }
+
+    /// <summary>
+    /// The temporaries that may be flipped, in order, each with its own statement and those that
+    /// read it. A sine or cosine temporary stays as it is: the emitter pairs those into one Math.SinCos.
+    /// </summary>
+    private static List<(string Name, int[] Statements)> Readers(IReadOnlyList<CodeStatement> statements, Dictionary<string, int> definitions, HashSet<string> assignedTwice)
+    {
+        var readers = new Dictionary<string, List<int>>(StringComparer.Ordinal);
+        foreach (var (name, i) in definitions)
+            if (!assignedTwice.Contains(name) && ((AssignmentStatement)statements[i]).Value is not CallExpr) readers[name] = [i];
+        var names = new HashSet<string>(StringComparer.Ordinal);
+        for (var i = 0; i < statements.Count; i++)
+        {
+            names.Clear();
+            foreach (var e in statements[i].Expressions) CollectVariables(e, names);
+            foreach (var name in names)
+                if (readers.TryGetValue(name, out var list) && list[^1] != i) list.Add(i);
+        }
+        return readers.OrderBy(r => r.Value[0]).Select(r => (r.Key, r.Value.ToArray())).ToList();
+    }
+
+    private static void CollectVariables(Expr e, HashSet<string> names)
+    {
+        if (e is VariableExpr v) names.Add(v.Name);
+        foreach (var c in e.Children) CollectVariables(c, names);
     }
 
     /// <summary>A statement with its signs placed for the chosen flips, and the negations it then needs.</summary>
