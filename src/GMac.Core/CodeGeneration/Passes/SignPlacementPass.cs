@@ -2,7 +2,8 @@ namespace GMac.Core.CodeGeneration.Passes;
 
 /// <summary>
 /// Places signs so that the code computes fewer negations (each one a sign-mask instruction the
-/// compiler keeps), without changing any operation count or any computed bit. A temporary may
+/// compiler keeps), without changing any operation count or any computed bit (but the sign of an
+/// exact zero, see <see cref="SignedForm"/>). A temporary may
 /// hold its value negated, when the statements that read it then absorb the sign into a
 /// subtraction, a swapped difference or a constant; e.g. t = a·b − c·d read as −(t·x) and −(t·y)
 /// becomes t = c·d − a·b read as t·x and t·y. Temporaries are flipped one at a time, each kept
@@ -72,7 +73,8 @@ public sealed class SignPlacementPass : IOptimizerPass
 
     /// <summary>
     /// The temporaries that may be flipped, in order, each with its own statement and those that
-    /// read it. A sine or cosine temporary stays as it is: the emitter pairs those into one Math.SinCos.
+    /// read it. A temporary holding a call stays as it is: negating it would cost a negation anyway,
+    /// and the emitter pairs a sine and a cosine temporary into one Math.SinCos.
     /// </summary>
     private static List<(string Name, int[] Statements)> Readers(IReadOnlyList<CodeStatement> statements, Dictionary<string, int> definitions, HashSet<string> assignedTwice)
     {
