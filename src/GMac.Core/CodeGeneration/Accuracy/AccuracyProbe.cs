@@ -54,7 +54,9 @@ public static class AccuracyProbe
     public static int MostAccurateAffordable(IReadOnlyList<CodeBlock> candidatesCheapestFirst)
     {
         if (candidatesCheapestFirst.Count < 2) return 0;
-        var errors = candidatesCheapestFirst.Select(Error).ToArray();
+        // forms that came out the same share one block: probe it once
+        var probed = new Dictionary<CodeBlock, double?>(ReferenceEqualityComparer.Instance);
+        var errors = candidatesCheapestFirst.Select(b => probed.TryGetValue(b, out var e) ? e : probed[b] = Error(b)).ToArray();
         var known = errors.Where(e => e is not null).Select(e => e!.Value).ToArray();
         if (known.Length < 2) return 0;
         var limit = Math.Max(Threshold, Factor * known.Min());
