@@ -73,10 +73,10 @@ public static class CodeGenerator
         {
             if (answers.TryGetValue(s, out var known)) return known;
             var question = s;
-            s = simplify(s);
-            for (var round = 0; round < 4; round++)
+            s = GenerationProfile.Time("caller simplify", () => simplify(s));
+            for (var round = 0; round < 4 && MayCancelOrReduce(s); round++)
             {
-                var reduced = HalfAngleReduction.Apply(Rewrites.PartialInverseCancellation.Apply(InverseCancellation.CancelDeep(s)));
+                var reduced = GenerationProfile.Time("inverse cancellation and half angles", () => HalfAngleReduction.Apply(Rewrites.PartialInverseCancellation.Apply(InverseCancellation.CancelDeep(s))));
                 if (ReferenceEquals(reduced, s)) break;
                 s = simplify(reduced);
             }
@@ -84,6 +84,13 @@ public static class CodeGenerator
             return s;
         };
     }
+
+    /// <summary>
+    /// Whether the scalar has an inverse, sine or cosine anywhere: the cancellations and the
+    /// half-angle reduction rewrite only those, and leave everything else as it is. One walk over
+    /// the atoms spares the several each of them would make.
+    /// </summary>
+    private static bool MayCancelOrReduce(Scalar s) => s.Atoms().Any(a => a.Kind is AtomKind.Inverse or AtomKind.Sin or AtomKind.Cos);
 
     /// <summary>Lowers a symbolic program (and its recorded temporaries) to an unoptimized code block.</summary>
     public static CodeBlock Build(SymbolicProgram program, IReadOnlyList<(string Name, Scalar Value)> temporaries, CodeGenerationRequest request) =>
@@ -119,7 +126,7 @@ public static class CodeGenerator
         var verbatimCount = verbatim.Count;
         if (verbatimCount == 0)
         {
-            GenerationProfile.Time("symbolic inliner", () => { SymbolicInliner.Inline(assignments, simplify); return 0; });
+            GenerationProfile.Time("symbolic inliner", () => { SymbolicInliner.Inline(assignments, s => GenerationProfile.Time("inliner simplify", () => simplify(s))); return 0; });
             GenerationProfile.Time("norm complement", () => { Rewrites.NormComplement.Apply(assignments, simplify); return 0; });
         }
 
