@@ -32,6 +32,14 @@ public sealed class CodeBlock
 
     public CodeStatistics Statistics() => CodeStatistics.Of(this);
 
+    /// <summary>Whether both blocks run the same statements (expressions compared structurally, verbatim text part by part).</summary>
+    public bool HasSameStatements(CodeBlock other) =>
+        Statements.Count == other.Statements.Count && Statements.Zip(other.Statements).All(p => p switch
+        {
+            (VerbatimStatement a, VerbatimStatement b) => a.Parts.SequenceEqual(b.Parts),
+            var (a, b) => a.Equals(b),
+        });
+
     /// <summary>Evaluates the block for given input values (for tests and verification).</summary>
     public IReadOnlyDictionary<string, double> Evaluate(IReadOnlyDictionary<string, double> inputs)
     {

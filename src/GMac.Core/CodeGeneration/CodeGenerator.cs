@@ -21,6 +21,7 @@ public static class CodeGenerator
     {
         request = request with { Simplify = EffectiveSimplifier(request.Simplify) };
         var candidates = new List<(CodeBlock Block, JoinMode Form)>();
+        var forms = new FormMemo();
         if (request.Join != JoinMode.Joined)
         {
             foreach (var statementsOnly in new[] { false, true })
@@ -28,19 +29,24 @@ public static class CodeGenerator
                 var recorder = new TemporaryRecorder(request.Simplify, statementsOnly);
                 var form = statementsOnly ? "split by statement" : "split by operation";
                 var program = GenerationProfile.Time($"evaluate {form}", () => request.Evaluate(recorder));
-                var built = GenerationProfile.Time($"build {form}", () => Build(program, recorder.Temporaries, request));
-                candidates.Add((GenerationProfile.Time($"optimize {form}", () => Optimizer.Optimize(built)), JoinMode.Split));
+                // Where every statement is one operation both recorders name the same values: the
+                // second form is then the same program, and building it again would give the same block.
+                var built = forms.BuiltFrom(program, recorder.Temporaries)
+                    ?? GenerationProfile.Time($"build {form}", () => Build(program, recorder.Temporaries, request));
+                forms.Remember(program, recorder.Temporaries, built);
+                candidates.Add((forms.Optimized(built, form), JoinMode.Split));
             }
         }
         if (request.Join != JoinMode.Split)
         {
             var evaluated = GenerationProfile.Time("evaluate joined", () => request.Evaluate(null));
-            var joined = GenerationProfile.Time("build joined", () => Build(evaluated, [], request));
             // Optimizing a fully expanded block is the slowest step; skip it when it starts far
-            // costlier than a form already found (sharing rarely recovers more than that).
-            var bestSoFar = candidates.Count == 0 ? int.MaxValue : candidates.Min(c => c.Block.Statistics().Cost);
-            if (Rewrites.SharedCost.Of(joined) <= HopelessFactor * (long)bestSoFar)
-                candidates.Add((GenerationProfile.Time("optimize joined", () => Optimizer.Optimize(joined)), JoinMode.Joined));
+            // costlier than a form already found (sharing rarely recovers more than that). Lowering
+            // stops as soon as the part lowered so far is past that bound.
+            var bestSoFar = candidates.Count == 0 ? long.MaxValue : HopelessFactor * (long)candidates.Min(c => c.Block.Statistics().Cost);
+            var joined = GenerationProfile.Time("build joined", () => Build(evaluated, [], request, bestSoFar));
+            if (joined is not null)
+                candidates.Add((forms.Optimized(joined, "joined"), JoinMode.Joined));
         }
         // The cheapest form wins unless it is far less accurate; on a tie, the one with fewer temporaries, then the joined (simplest) form.
         var ranked = candidates
@@ -67,10 +73,10 @@ public static class CodeGenerator
         {
             if (answers.TryGetValue(s, out var known)) return known;
             var question = s;
-            s = simplify(s);
-            for (var round = 0; round < 4; round++)
+            s = GenerationProfile.Time("caller simplify", () => simplify(s));
+            for (var round = 0; round < 4 && MayCancelOrReduce(s); round++)
             {
-                var reduced = HalfAngleReduction.Apply(Rewrites.PartialInverseCancellation.Apply(InverseCancellation.CancelDeep(s)));
+                var reduced = GenerationProfile.Time("inverse cancellation and half angles", () => HalfAngleReduction.Apply(Rewrites.PartialInverseCancellation.Apply(InverseCancellation.CancelDeep(s))));
                 if (ReferenceEquals(reduced, s)) break;
                 s = simplify(reduced);
             }
@@ -79,8 +85,25 @@ public static class CodeGenerator
         };
     }
 
+    /// <summary>
+    /// Whether the scalar has an inverse, sine or cosine anywhere: the cancellations and the
+    /// half-angle reduction rewrite only those, and leave everything else as it is. One walk over
+    /// the atoms spares the several each of them would make.
+    /// </summary>
+    private static bool MayCancelOrReduce(Scalar s) => s.Atoms().Any(a => a.Kind is AtomKind.Inverse or AtomKind.Sin or AtomKind.Cos);
+
     /// <summary>Lowers a symbolic program (and its recorded temporaries) to an unoptimized code block.</summary>
-    public static CodeBlock Build(SymbolicProgram program, IReadOnlyList<(string Name, Scalar Value)> temporaries, CodeGenerationRequest request)
+    public static CodeBlock Build(SymbolicProgram program, IReadOnlyList<(string Name, Scalar Value)> temporaries, CodeGenerationRequest request) =>
+        Build(program, temporaries, request, long.MaxValue)!;
+
+    /// <summary>
+    /// As <see cref="Build(SymbolicProgram, IReadOnlyList{ValueTuple{string, Scalar}}, CodeGenerationRequest)"/>,
+    /// or null when the block's shared cost (<see cref="Rewrites.SharedCost"/>) exceeds
+    /// <paramref name="sharedCostLimit"/>. Adding statements never lowers the shared cost, so the
+    /// block is given up on as soon as the statements lowered so far are past the limit.
+    /// </summary>
+    internal static CodeBlock? Build(SymbolicProgram program, IReadOnlyList<(string Name, Scalar Value)> temporaries, CodeGenerationRequest request,
+        long sharedCostLimit)
     {
         var simplify = request.Simplify ?? (s => s);
         var inputs = new HashSet<string>(request.InputText.Keys, StringComparer.Ordinal);
@@ -93,7 +116,7 @@ public static class CodeGenerator
             switch (s)
             {
                 case SymbolicOutput o when request.OutputTargets.ContainsKey(o.Name):
-                    assignments.Add(new SymbolicInliner.Assignment(o.Name, simplify(o.Value), true));
+                    assignments.Add(new SymbolicInliner.Assignment(o.Name, GenerationProfile.Time("simplify outputs", () => simplify(o.Value)), true));
                     break;
                 case SymbolicVerbatim v:
                     verbatim[assignments.Count] = v; // placed before the assignment that follows it
@@ -103,12 +126,12 @@ public static class CodeGenerator
         var verbatimCount = verbatim.Count;
         if (verbatimCount == 0)
         {
-            GenerationProfile.Time("symbolic inliner", () => { SymbolicInliner.Inline(assignments, simplify); return 0; });
+            GenerationProfile.Time("symbolic inliner", () => { SymbolicInliner.Inline(assignments, s => GenerationProfile.Time("inliner simplify", () => simplify(s))); return 0; });
             GenerationProfile.Time("norm complement", () => { Rewrites.NormComplement.Apply(assignments, simplify); return 0; });
         }
 
         var known = new HashSet<string>(inputs, StringComparer.Ordinal);
-        var spread = Rewrites.AtomSpread.Of(assignments.Where(a => a.IsOutput).Select(a => a.Value));
+        var spread = GenerationProfile.Time("atom spread", () => Rewrites.AtomSpread.Of(assignments.Where(a => a.IsOutput).Select(a => a.Value)));
         Expr Lower(Scalar s, string where)
         {
             var unknown = s.Variables.Where(v => !known.Contains(v)).ToArray();
@@ -118,17 +141,25 @@ public static class CodeGenerator
         }
 
         var statements = new List<CodeStatement>();
+        var nextCheck = 1;
         for (var i = 0; i <= assignments.Count; i++)
         {
+            // at doubling counts, so that checking costs no more than the final count
+            if (sharedCostLimit < long.MaxValue && statements.Count >= nextCheck)
+            {
+                if (Rewrites.SharedCost.Of(new CodeBlock(statements, request.InputText, request.OutputTargets)) > sharedCostLimit) return null;
+                nextCheck = 2 * statements.Count;
+            }
             if (verbatim.TryGetValue(i, out var v))
                 statements.Add(new VerbatimStatement(v.Parts.Select(p => p.Value is null
                     ? VerbatimPart.Literal(p.Text ?? "")
                     : VerbatimPart.Expression(Lower(simplify(p.Value), "output text"))).ToArray()));
             if (i == assignments.Count) break;
             var a = assignments[i];
-            statements.Add(new AssignmentStatement(a.Name, Lower(a.Value, a.IsOutput ? $"output {a.Name}" : $"temporary {a.Name}"), a.IsOutput));
+            statements.Add(new AssignmentStatement(a.Name, GenerationProfile.Time("lowering", () => Lower(a.Value, a.IsOutput ? $"output {a.Name}" : $"temporary {a.Name}")), a.IsOutput));
             known.Add(a.Name);
         }
-        return new CodeBlock(statements, request.InputText, request.OutputTargets);
+        var block = new CodeBlock(statements, request.InputText, request.OutputTargets);
+        return sharedCostLimit < long.MaxValue && Rewrites.SharedCost.Of(block) > sharedCostLimit ? null : block;
     }
 }

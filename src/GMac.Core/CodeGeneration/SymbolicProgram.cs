@@ -11,6 +11,14 @@ public sealed class SymbolicProgram
     public IReadOnlyList<SymbolicStatement> Statements { get; }
 
     public SymbolicProgram(IEnumerable<SymbolicStatement> statements) => Statements = statements.ToArray();
+
+    /// <summary>Whether both programs have the same statements (verbatim text compared part by part).</summary>
+    public bool IsSameAs(SymbolicProgram other) =>
+        Statements.Count == other.Statements.Count && Statements.Zip(other.Statements).All(p => p switch
+        {
+            (SymbolicVerbatim a, SymbolicVerbatim b) => a.Parts.SequenceEqual(b.Parts),
+            var (a, b) => a.Equals(b),
+        });
 }
 
 /// <summary>One statement of a <see cref="SymbolicProgram"/>.</summary>

@@ -42,6 +42,25 @@ public class AccuracyProbe_Choice
     }
 
     [Fact]
+    public void Stopping_at_an_accurate_cheapest_candidate_chooses_as_probing_every_candidate_would()
+    {
+        CodeBlock[] pool = [Expanded(), Differences(), Block(Product(Ax, By)), Block(Call("sqrt", Ax)), Block(Sum(Product(Ax, Ax), Negate(Product(Bx, Bx))))];
+        foreach (var a in pool)
+        foreach (var b in pool)
+        foreach (var c in pool)
+        {
+            CodeBlock[] candidates = [a, b, c];
+            // the rule on every candidate's error: the first not far above the best known error
+            var errors = candidates.Select(AccuracyProbe.Error).ToArray();
+            var known = errors.Where(e => e is not null).Select(e => e!.Value).ToArray();
+            var limit = known.Length < 2 ? double.PositiveInfinity : Math.Max(AccuracyProbe.Threshold, AccuracyProbe.Factor * known.Min());
+            var expected = Array.FindIndex(errors, e => e is null || e <= limit);
+
+            Assert.Equal(expected, AccuracyProbe.MostAccurateAffordable(candidates));
+        }
+    }
+
+    [Fact]
     public void Blocks_with_math_calls_or_a_zero_division_are_not_judged()
     {
         Assert.Null(AccuracyProbe.Error(Block(Call("sqrt", Ax))));

@@ -54,7 +54,13 @@ public static class AccuracyProbe
     public static int MostAccurateAffordable(IReadOnlyList<CodeBlock> candidatesCheapestFirst)
     {
         if (candidatesCheapestFirst.Count < 2) return 0;
-        var errors = candidatesCheapestFirst.Select(Error).ToArray();
+        // forms that came out the same share one block: probe it once
+        var probed = new Dictionary<CodeBlock, double?>(ReferenceEqualityComparer.Instance);
+        double? ErrorOf(CodeBlock b) => probed.TryGetValue(b, out var e) ? e : probed[b] = Error(b);
+        // The cheapest stays when it cannot be judged or is within the absolute level: the limit
+        // is never below that level, so the others need not be probed.
+        if (ErrorOf(candidatesCheapestFirst[0]) is not { } cheapest || cheapest <= Threshold) return 0;
+        var errors = candidatesCheapestFirst.Select(ErrorOf).ToArray();
         var known = errors.Where(e => e is not null).Select(e => e!.Value).ToArray();
         if (known.Length < 2) return 0;
         var limit = Math.Max(Threshold, Factor * known.Min());
