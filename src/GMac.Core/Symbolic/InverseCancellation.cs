@@ -17,7 +17,9 @@ public static class InverseCancellation
     /// <summary>The scalar with each function atom rebuilt over transformed arguments.</summary>
     public static Scalar MapArguments(Scalar e, Func<Scalar, Scalar> map)
     {
-        var atoms = e.Atoms().Where(a => a.Arguments.Count > 0).ToArray();
+        // Only the terms' own factors: atoms nested deeper are rebuilt by the recursion on their
+        // arguments, and a replacement listed for them would match no factor here.
+        var atoms = e.FactorAtoms.Where(a => a.Arguments.Count > 0).ToArray();
         if (atoms.Length == 0) return e;
         var replaced = new Dictionary<Atom, Scalar>();
         foreach (var atom in atoms)
@@ -63,7 +65,8 @@ public static class InverseCancellation
         for (var round = 0; round < 16; round++)
         {
             var changed = false;
-            foreach (var atom in e.Atoms().Where(a => a.Kind == AtomKind.Inverse).OrderBy(a => a).ToArray())
+            // an inverse nested in an argument has no cofactor at this level
+            foreach (var atom in e.FactorAtoms.Where(a => a.Kind == AtomKind.Inverse).OrderBy(a => a).ToArray())
             {
                 var (cofactor, rest) = Split(e, atom);
                 if (Scalar.IsZero(cofactor)) continue;

@@ -17,8 +17,11 @@ public static class PartialInverseCancellation
 
     public static Scalar Apply(Scalar e)
     {
+        // Every inverse, nested ones included: a quotient can bring one up from inside a divisor,
+        // and it is then taken in its turn. Until then it has no cofactor, so it is skipped unsplit.
         foreach (var atom in e.Atoms().Where(a => a.Kind == AtomKind.Inverse).Order().ToArray())
         {
+            if (!e.FactorAtoms.Contains(atom)) continue;
             var (cofactor, rest) = Split(e, atom);
             var s = atom.Arguments[0];
             if (cofactor.Terms.Count < 2 || cofactor.Terms.Count > MaxCofactorTerms || s.Terms.Count > MaxDivisorTerms) continue;
