@@ -120,16 +120,5 @@ public static class InverseCancellation
     }
 
     /// <summary>m / d when every power of d is at most m's (as exponents may be negative, compare signed).</summary>
-    private static Monomial? Divide(Monomial m, Monomial d)
-    {
-        var powers = m.Factors.ToDictionary(f => f.Atom, f => f.Power);
-        foreach (var f in d.Factors)
-        {
-            var have = powers.GetValueOrDefault(f.Atom);
-            if (f.Power > 0 ? have < f.Power : have > f.Power) return null;
-            powers[f.Atom] = have - f.Power;
-        }
-        return Monomial.Create(powers.Where(kv => kv.Value != 0).Select(kv => new Factor(kv.Key, kv.Value)));
-    }
-
+    private static Monomial? Divide(Monomial m, Monomial d) => Monomial.TryDivide(m, d);
 }

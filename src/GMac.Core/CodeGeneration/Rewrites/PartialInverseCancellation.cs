@@ -28,6 +28,7 @@ public static class PartialInverseCancellation
             Scalar? best = null;
             foreach (var first in PolynomialRemainder.Candidates(s))
             {
+                if (!PolynomialRemainder.CanDivide(cofactor, s, first)) continue; // the quotient would be zero
                 if (!PolynomialRemainder.TryDivide(cofactor, s, first, out var q, out var r) || Scalar.IsZero(q)) continue;
                 var candidate = q + r * atom.AsScalar() + rest;
                 if (candidate.Terms.Count < (best ?? e).Terms.Count) best = candidate;
