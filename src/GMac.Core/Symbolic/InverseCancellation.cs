@@ -103,16 +103,16 @@ public static class InverseCancellation
         quotient = Scalar.Zero;
         if (Scalar.IsZero(s)) return false;
         var lead = DivisionTerms.Leading(s.Terms, DivisionTerms.CompareDescendingAtoms);
-        var remainder = DivisionTerms.Table(b);
+        var remainder = new DividendTerms(b, DivisionTerms.CompareDescendingAtoms);
         var q = new List<Term>();
         for (var step = 0; step < MaxDivisionSteps && remainder.Count > 0; step++)
         {
-            var top = DivisionTerms.Leading(remainder, DivisionTerms.CompareDescendingAtoms);
+            var top = remainder.Leading();
             var factor = Divide(top.Monomial, lead.Monomial);
             if (factor is null) return false; // the leading term is not divisible: a remainder stays
             var t = new Term(top.Coefficient / lead.Coefficient, factor);
             q.Add(t);
-            DivisionTerms.SubtractMultiple(remainder, t, s, lead.Monomial, top.Monomial);
+            remainder.SubtractMultiple(t, s, lead.Monomial, top.Monomial);
         }
         if (remainder.Count > 0) return false;
         quotient = Scalar.FromTerms(q);

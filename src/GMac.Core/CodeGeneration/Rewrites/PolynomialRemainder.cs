@@ -20,13 +20,13 @@ internal static class PolynomialRemainder
         if (Scalar.IsZero(s) || Scalar.IsZero(b)) return false;
         int Order(Monomial x, Monomial y) => Compare(x, y, first);
         var lead = DivisionTerms.Leading(s.Terms, Order);
-        var rest = DivisionTerms.Table(b);
+        var rest = new DividendTerms(b, Order);
         var q = new List<Term>();
         var r = new List<Term>();
         for (var step = 0; rest.Count > 0; step++)
         {
             if (step == MaxSteps) return false;
-            var top = DivisionTerms.Leading(rest, Order);
+            var top = rest.Leading();
             var factor = Divide(top.Monomial, lead.Monomial);
             if (factor is null)
             {
@@ -36,7 +36,7 @@ internal static class PolynomialRemainder
             }
             var t = new Term(top.Coefficient / lead.Coefficient, factor);
             q.Add(t);
-            DivisionTerms.SubtractMultiple(rest, t, s, lead.Monomial, top.Monomial);
+            rest.SubtractMultiple(t, s, lead.Monomial, top.Monomial);
         }
         quotient = Scalar.FromTerms(q);
         remainder = Scalar.FromTerms(r);
