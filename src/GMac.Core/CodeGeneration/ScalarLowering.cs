@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using GMac.Core.Numerics;
 using GMac.Core.Symbolic;
 
@@ -13,7 +14,14 @@ public static class ScalarLowering
 {
     private sealed record PolyTerm(Rational Coefficient, Dictionary<Atom, int> Powers);
 
-    public static Expr Lower(Scalar s) => Lower(s, null);
+    /// <summary>
+    /// Lowering without a spread depends on the scalar alone, and the same arguments (the
+    /// denominator every output divides by, the radicand of a norm) are lowered again for every
+    /// expression that holds them: the trees are immutable, so one is made per scalar and shared.
+    /// </summary>
+    public static Expr Lower(Scalar s) => Lowered.GetValue(s, static s => Lower(s, null));
+
+    private static readonly ConditionalWeakTable<Scalar, Expr> Lowered = new();
 
     /// <param name="spread">
     /// For each atom, how many statements of the block read it. Between atoms shared by as many

@@ -3,53 +3,12 @@ using GMac.Core.Numerics;
 namespace GMac.Core.Symbolic;
 
 /// <summary>
-/// What the multivariate divisions of the inverse-cancellation rewrites share: a dividend kept as a
-/// table of terms by monomial (monomials are interned, so keys compare by reference) that each step
-/// updates in place, and the lexicographic order on monomials with every atom as a variable.
+/// What the multivariate divisions of the inverse-cancellation rewrites share besides the running
+/// dividend (<see cref="DividendTerms"/>): the leading term of a divisor, and the lexicographic order
+/// on monomials with every atom as a variable.
 /// </summary>
 internal static class DivisionTerms
 {
-    public static Dictionary<Monomial, Rational> Table(Scalar s)
-    {
-        var table = new Dictionary<Monomial, Rational>(s.Terms.Count * 2);
-        foreach (var t in s.Terms) table[t.Monomial] = t.Coefficient;
-        return table;
-    }
-
-    /// <summary>
-    /// table −= t·s, where t·lead (lead a term of s) is the table's term <paramref name="top"/>: that
-    /// one cancels exactly and is removed, the other products are merged in.
-    /// </summary>
-    public static void SubtractMultiple(Dictionary<Monomial, Rational> table, Term t, Scalar s, Monomial lead, Monomial top)
-    {
-        table.Remove(top);
-        foreach (var u in s.Terms)
-        {
-            if (ReferenceEquals(u.Monomial, lead)) continue;
-            var m = t.Monomial * u.Monomial;
-            var product = t.Coefficient * u.Coefficient;
-            var c = table.TryGetValue(m, out var have) ? have - product : -product;
-            if (c.IsZero) table.Remove(m);
-            else table[m] = c;
-        }
-    }
-
-    /// <summary>The table's greatest term under <paramref name="compare"/>.</summary>
-    public static Term Leading(Dictionary<Monomial, Rational> table, Func<Monomial, Monomial, int> compare)
-    {
-        Monomial? best = null;
-        var coefficient = Rational.Zero;
-        foreach (var (m, c) in table)
-        {
-            if (best is null || compare(m, best) > 0)
-            {
-                best = m;
-                coefficient = c;
-            }
-        }
-        return new Term(coefficient, best!);
-    }
-
     /// <summary>The greatest of the terms under <paramref name="compare"/>.</summary>
     public static Term Leading(IReadOnlyList<Term> terms, Func<Monomial, Monomial, int> compare)
     {

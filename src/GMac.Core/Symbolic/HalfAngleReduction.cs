@@ -12,7 +12,8 @@ public static class HalfAngleReduction
 {
     public static Scalar Apply(Scalar value)
     {
-        if (!value.Atoms().Any(IsHalfAngleTrig)) return value;
+        // only the terms' own factors are reduced; deeper ones leave every term as it is
+        if (!value.FactorAtoms.Any(IsHalfAngleTrig)) return value;
         var sum = new ScalarSumBuilder();
         foreach (var term in value.Terms) sum.Add(Reduce(term));
         return sum.ToScalar();

@@ -17,7 +17,9 @@ public static class InverseCancellation
     /// <summary>The scalar with each function atom rebuilt over transformed arguments.</summary>
     public static Scalar MapArguments(Scalar e, Func<Scalar, Scalar> map)
     {
-        var atoms = e.Atoms().Where(a => a.Arguments.Count > 0).ToArray();
+        // Only the terms' own factors: atoms nested deeper are rebuilt by the recursion on their
+        // arguments, and a replacement listed for them would match no factor here.
+        var atoms = e.FactorAtoms.Where(a => a.Arguments.Count > 0).ToArray();
         if (atoms.Length == 0) return e;
         var replaced = new Dictionary<Atom, Scalar>();
         foreach (var atom in atoms)
@@ -63,7 +65,8 @@ public static class InverseCancellation
         for (var round = 0; round < 16; round++)
         {
             var changed = false;
-            foreach (var atom in e.Atoms().Where(a => a.Kind == AtomKind.Inverse).OrderBy(a => a).ToArray())
+            // an inverse nested in an argument has no cofactor at this level
+            foreach (var atom in e.FactorAtoms.Where(a => a.Kind == AtomKind.Inverse).OrderBy(a => a).ToArray())
             {
                 var (cofactor, rest) = Split(e, atom);
                 if (Scalar.IsZero(cofactor)) continue;
@@ -100,16 +103,16 @@ public static class InverseCancellation
         quotient = Scalar.Zero;
         if (Scalar.IsZero(s)) return false;
         var lead = DivisionTerms.Leading(s.Terms, DivisionTerms.CompareDescendingAtoms);
-        var remainder = DivisionTerms.Table(b);
+        var remainder = new DividendTerms(b, DivisionTerms.CompareDescendingAtoms);
         var q = new List<Term>();
         for (var step = 0; step < MaxDivisionSteps && remainder.Count > 0; step++)
         {
-            var top = DivisionTerms.Leading(remainder, DivisionTerms.CompareDescendingAtoms);
+            var top = remainder.Leading();
             var factor = Divide(top.Monomial, lead.Monomial);
             if (factor is null) return false; // the leading term is not divisible: a remainder stays
             var t = new Term(top.Coefficient / lead.Coefficient, factor);
             q.Add(t);
-            DivisionTerms.SubtractMultiple(remainder, t, s, lead.Monomial, top.Monomial);
+            remainder.SubtractMultiple(t, s, lead.Monomial, top.Monomial);
         }
         if (remainder.Count > 0) return false;
         quotient = Scalar.FromTerms(q);
@@ -117,16 +120,5 @@ public static class InverseCancellation
     }
 
     /// <summary>m / d when every power of d is at most m's (as exponents may be negative, compare signed).</summary>
-    private static Monomial? Divide(Monomial m, Monomial d)
-    {
-        var powers = m.Factors.ToDictionary(f => f.Atom, f => f.Power);
-        foreach (var f in d.Factors)
-        {
-            var have = powers.GetValueOrDefault(f.Atom);
-            if (f.Power > 0 ? have < f.Power : have > f.Power) return null;
-            powers[f.Atom] = have - f.Power;
-        }
-        return Monomial.Create(powers.Where(kv => kv.Value != 0).Select(kv => new Factor(kv.Key, kv.Value)));
-    }
-
+    private static Monomial? Divide(Monomial m, Monomial d) => Monomial.TryDivide(m, d);
 }

@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using GMac.Core.Numerics;
 
 namespace GMac.Core.Symbolic;
@@ -30,9 +31,9 @@ public sealed class RuleBasedCas : ICasAdapter
         ArgumentNullException.ThrowIfNull(expression);
         ArgumentNullException.ThrowIfNull(assumptions);
         var current = assumptions.Relations.Reduce(expression);
+        var pass = new Pass(assumptions, _rewrittenAtoms.GetValue(assumptions, static _ => new ConditionalWeakTable<Atom, Scalar>()));
         for (var round = 0; round < MaxRounds; round++)
         {
-            var pass = new Pass(assumptions);
             var next = assumptions.Relations.Reduce(pass.Rewrite(current));
             if (ReferenceEquals(next, current)) break;
             current = next;
@@ -40,28 +41,62 @@ public sealed class RuleBasedCas : ICasAdapter
         return current;
     }
 
-    /// <summary>One bottom-up rewrite, memoized on atoms.</summary>
-    private sealed class Pass(Assumptions assumptions)
-    {
-        private readonly Dictionary<Atom, Scalar> _atoms = new();
+    /// <summary>
+    /// What each atom became under one set of assumptions. An atom's rewrite depends on nothing
+    /// else (its arguments and the bounds), so every pass and every call with the same assumptions
+    /// shares it; atoms are interned, and the table lets go of those no longer in use.
+    /// </summary>
+    private readonly ConditionalWeakTable<Assumptions, ConditionalWeakTable<Atom, Scalar>> _rewrittenAtoms = new();
 
+    /// <summary>One bottom-up rewrite, memoized on atoms.</summary>
+    private sealed class Pass(Assumptions assumptions, ConditionalWeakTable<Atom, Scalar> atoms)
+    {
+        /// <summary>
+        /// Terms whose atoms all stay and that no term rule touches are kept as they are; the
+        /// rest are rebuilt. When every term stays the value itself is returned, with no new sum.
+        /// </summary>
         public Scalar Rewrite(Scalar value)
         {
-            var sum = new ScalarSumBuilder();
-            foreach (var term in value.TermArray)
+            var terms = value.TermArray;
+            ScalarSumBuilder? sum = null;
+            for (var i = 0; i < terms.Length; i++)
             {
+                var term = terms[i];
                 var factors = term.Monomial.FactorArray;
-                var product = Scalar.Constant(term.Coefficient);
-                foreach (var factor in factors)
-                    product *= Scalar.IntegerPower(RewriteAtom(factor.Atom), factor.Power);
-                foreach (var rebuilt in product.TermArray) sum.Add(RewriteTerm(rebuilt));
+                Scalar? product = null;
+                for (var j = 0; j < factors.Length; j++)
+                {
+                    var image = RewriteAtom(factors[j].Atom);
+                    if (product is null && ReferenceEquals(image, factors[j].Atom.AsScalar())) continue;
+                    product ??= ProductOfFactors(term.Coefficient, factors, j);
+                    product *= Scalar.IntegerPower(image, factors[j].Power);
+                }
+                if (product is null && !NeedsTermRule(factors))
+                {
+                    sum?.Add(term);
+                    continue;
+                }
+                if (sum is null)
+                {
+                    sum = new ScalarSumBuilder();
+                    for (var k = 0; k < i; k++) sum.Add(terms[k]);
+                }
+                foreach (var rebuilt in (product ?? Scalar.FromTerm(term.Coefficient, term.Monomial)).TermArray) sum.Add(RewriteTerm(rebuilt));
             }
-            return sum.ToScalar();
+            return sum is null ? value : sum.ToScalar();
+        }
+
+        /// <summary>c·f₀ᵖ⁰·…·fₖ₋₁ᵖᵏ⁻¹, the factors before index <paramref name="count"/> unchanged.</summary>
+        private static Scalar ProductOfFactors(Rational coefficient, Factor[] factors, int count)
+        {
+            var product = Scalar.Constant(coefficient);
+            for (var k = 0; k < count; k++) product *= Scalar.IntegerPower(factors[k].Atom.AsScalar(), factors[k].Power);
+            return product;
         }
 
         private Scalar RewriteAtom(Atom atom)
         {
-            if (_atoms.TryGetValue(atom, out var known)) return known;
+            if (atoms.TryGetValue(atom, out var known)) return known;
             Scalar result;
             if (atom.ArgumentArray.Length == 0) result = atom.AsScalar();
             else
@@ -76,7 +111,7 @@ public sealed class RuleBasedCas : ICasAdapter
                     _ => Scalar.Apply(atom.Kind, arguments),
                 };
             }
-            _atoms[atom] = result;
+            atoms.AddOrUpdate(atom, result);
             return result;
         }
 
@@ -164,10 +199,15 @@ public sealed class RuleBasedCas : ICasAdapter
             return (abs, power, (c, abs.ArgumentArray[0]));
         }
 
-        /// <summary>Rules on the factors of one monomial of the rebuilt expression.</summary>
-        private static Scalar RewriteTerm(Term term)
+        /// <summary>Whether <see cref="RewriteTerm"/> would change a term with these factors.</summary>
+        private static bool NeedsTermRule(Factor[] factors)
         {
-            var factors = term.Monomial.FactorArray;
+            var (needed, exponentials) = TermRuleNeeds(factors);
+            return needed || exponentials >= 2;
+        }
+
+        private static (bool Needed, int Exponentials) TermRuleNeeds(Factor[] factors)
+        {
             var needed = false;
             var exponentials = 0;
             foreach (var factor in factors)
@@ -189,6 +229,14 @@ public sealed class RuleBasedCas : ICasAdapter
                         break;
                 }
             }
+            return (needed, exponentials);
+        }
+
+        /// <summary>Rules on the factors of one monomial of the rebuilt expression.</summary>
+        private static Scalar RewriteTerm(Term term)
+        {
+            var factors = term.Monomial.FactorArray;
+            var (needed, exponentials) = TermRuleNeeds(factors);
             if (!needed && exponentials < 2) return Scalar.FromTerm(term.Coefficient, term.Monomial);
 
             var result = Scalar.Constant(term.Coefficient);

@@ -87,9 +87,27 @@ public sealed partial class Scalar
     public Scalar Substitute(IReadOnlyDictionary<string, Scalar> replacements)
     {
         ArgumentNullException.ThrowIfNull(replacements);
-        if (replacements.Count == 0) return this;
-        return MapAtoms(this, atom => atom.Kind == AtomKind.Variable && replacements.TryGetValue(atom.Name, out var r) ? r : null,
+        if (replacements.Count == 0 || !ReadsAny(this, replacements)) return this;
+        // A function atom whose arguments read none of the variables stays as it is: saying so up
+        // front saves walking its arguments (often large shared sums such as a denominator).
+        return MapAtoms(this, atom => atom.Kind == AtomKind.Variable
+                ? replacements.TryGetValue(atom.Name, out var r) ? r : null
+                : atom.ArgumentArray.Length > 0 && !Array.Exists(atom.ArgumentArray, a => ReadsAny(a, replacements)) ? atom.AsScalar() : null,
             new Dictionary<Atom, Scalar>());
+    }
+
+    private static bool ReadsAny(Scalar s, IReadOnlyDictionary<string, Scalar> replacements)
+    {
+        var variables = s.Variables;
+        if (variables.Count < replacements.Count)
+        {
+            foreach (var name in variables)
+                if (replacements.ContainsKey(name)) return true;
+            return false;
+        }
+        foreach (var name in replacements.Keys)
+            if (variables.Contains(name)) return true;
+        return false;
     }
 
     public Scalar Substitute(string variable, Scalar replacement) =>

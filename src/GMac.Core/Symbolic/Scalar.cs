@@ -23,6 +23,8 @@ public sealed partial class Scalar : IComparable<Scalar>
     private readonly Term[] _terms;
     private readonly int _hash;
     private IReadOnlySet<string>? _variables;
+    private IReadOnlySet<Atom>? _atoms;
+    private IReadOnlySet<Atom>? _factorAtoms;
 
     private object? _fingerprint; // a boxed UInt128: a reference is published whole, a UInt128 field could tear
 
@@ -301,7 +303,21 @@ public sealed partial class Scalar : IComparable<Scalar>
     }
 
     /// <summary>Every distinct atom occurring in the expression, arguments included (each once).</summary>
-    public IReadOnlySet<Atom> Atoms()
+    public IReadOnlySet<Atom> Atoms() => _atoms ??= CollectAtoms();
+
+    /// <summary>The distinct atoms of the terms' own factors, not looking inside function arguments.</summary>
+    internal IReadOnlySet<Atom> FactorAtoms => _factorAtoms ??= CollectFactorAtoms();
+
+    private HashSet<Atom> CollectFactorAtoms()
+    {
+        var atoms = new HashSet<Atom>();
+        foreach (var term in _terms)
+        foreach (var factor in term.Monomial.FactorArray)
+            atoms.Add(factor.Atom);
+        return atoms;
+    }
+
+    private HashSet<Atom> CollectAtoms()
     {
         var atoms = new HashSet<Atom>();
         var pending = new Stack<Scalar>();

@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using GMac.Core.Numerics;
 
 namespace GMac.Core.Symbolic;
@@ -77,7 +78,7 @@ public sealed class SideRelations
     private Scalar Reduce(Scalar value, Dictionary<Atom, Scalar> memo)
     {
         // Arguments first, so that e.g. sqrt(w^2 + x^2 + y^2 + z^2) becomes sqrt(1) = 1.
-        var current = Scalar.MapAtoms(value, atom => atom.ArgumentArray.Length == 0 ? null : ReduceArguments(atom, memo), memo);
+        var current = Scalar.MapAtoms(value, atom => atom.ArgumentArray.Length == 0 ? null : ReducedAtom(atom), memo);
         for (var pass = 0; pass < MaxPasses; pass++)
         {
             var next = ReduceOnce(current);
@@ -85,6 +86,21 @@ public sealed class SideRelations
             current = next;
         }
         throw new InvalidOperationException($"The side relations [{this}] do not terminate on '{value}'.");
+    }
+
+    /// <summary>
+    /// What each function atom becomes once its arguments are reduced. The relations are fixed, so
+    /// the answer is too: it is shared by every call (a large argument such as the denominator of
+    /// every output is otherwise reduced again for each expression that divides by it).
+    /// </summary>
+    private readonly ConditionalWeakTable<Atom, Scalar> _reducedAtoms = new();
+
+    private Scalar ReducedAtom(Atom atom)
+    {
+        if (_reducedAtoms.TryGetValue(atom, out var known)) return known;
+        var reduced = ReduceArguments(atom, new Dictionary<Atom, Scalar>());
+        _reducedAtoms.AddOrUpdate(atom, reduced);
+        return reduced;
     }
 
     private Scalar ReduceArguments(Atom atom, Dictionary<Atom, Scalar> memo)

@@ -17,14 +17,18 @@ public static class PartialInverseCancellation
 
     public static Scalar Apply(Scalar e)
     {
+        // Every inverse, nested ones included: a quotient can bring one up from inside a divisor,
+        // and it is then taken in its turn. Until then it has no cofactor, so it is skipped unsplit.
         foreach (var atom in e.Atoms().Where(a => a.Kind == AtomKind.Inverse).Order().ToArray())
         {
+            if (!e.FactorAtoms.Contains(atom)) continue;
             var (cofactor, rest) = Split(e, atom);
             var s = atom.Arguments[0];
             if (cofactor.Terms.Count < 2 || cofactor.Terms.Count > MaxCofactorTerms || s.Terms.Count > MaxDivisorTerms) continue;
             Scalar? best = null;
             foreach (var first in PolynomialRemainder.Candidates(s))
             {
+                if (!PolynomialRemainder.CanDivide(cofactor, s, first)) continue; // the quotient would be zero
                 if (!PolynomialRemainder.TryDivide(cofactor, s, first, out var q, out var r) || Scalar.IsZero(q)) continue;
                 var candidate = q + r * atom.AsScalar() + rest;
                 if (candidate.Terms.Count < (best ?? e).Terms.Count) best = candidate;

@@ -20,13 +20,13 @@ internal static class PolynomialRemainder
         if (Scalar.IsZero(s) || Scalar.IsZero(b)) return false;
         int Order(Monomial x, Monomial y) => Compare(x, y, first);
         var lead = DivisionTerms.Leading(s.Terms, Order);
-        var rest = DivisionTerms.Table(b);
+        var rest = new DividendTerms(b, Order);
         var q = new List<Term>();
         var r = new List<Term>();
         for (var step = 0; rest.Count > 0; step++)
         {
             if (step == MaxSteps) return false;
-            var top = DivisionTerms.Leading(rest, Order);
+            var top = rest.Leading();
             var factor = Divide(top.Monomial, lead.Monomial);
             if (factor is null)
             {
@@ -36,7 +36,7 @@ internal static class PolynomialRemainder
             }
             var t = new Term(top.Coefficient / lead.Coefficient, factor);
             q.Add(t);
-            DivisionTerms.SubtractMultiple(rest, t, s, lead.Monomial, top.Monomial);
+            rest.SubtractMultiple(t, s, lead.Monomial, top.Monomial);
         }
         quotient = Scalar.FromTerms(q);
         remainder = Scalar.FromTerms(r);
@@ -60,14 +60,23 @@ internal static class PolynomialRemainder
     /// <summary>m / d when d's powers do not exceed m's (only positive powers divide).</summary>
     private static Monomial? Divide(Monomial m, Monomial d)
     {
-        var powers = m.Factors.ToDictionary(f => f.Atom, f => f.Power);
-        foreach (var f in d.Factors)
-        {
-            var have = powers.GetValueOrDefault(f.Atom);
-            if (f.Power <= 0 || have < f.Power) return null;
-            powers[f.Atom] = have - f.Power;
-        }
-        return Monomial.Create(powers.Where(kv => kv.Value != 0).Select(kv => new Factor(kv.Key, kv.Value)));
+        foreach (var f in d.FactorArray)
+            if (f.Power <= 0) return null;
+        return Monomial.TryDivide(m, d);
+    }
+
+    /// <summary>
+    /// Whether the division in the order led by <paramref name="first"/> can give a quotient at all:
+    /// when no term of b is divisible by the leading term of s, every step moves a term of b to the
+    /// remainder and the quotient stays zero, so the division need not be run.
+    /// </summary>
+    public static bool CanDivide(Scalar b, Scalar s, Atom first)
+    {
+        if (Scalar.IsZero(s) || Scalar.IsZero(b)) return false;
+        var lead = DivisionTerms.Leading(s.Terms, (x, y) => Compare(x, y, first)).Monomial;
+        foreach (var t in b.TermArray)
+            if (Divide(t.Monomial, lead) is not null) return true;
+        return false;
     }
 
     /// <summary>Atoms that may lead the order: those of s with a positive power.</summary>
