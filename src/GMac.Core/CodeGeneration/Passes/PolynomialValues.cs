@@ -1,0 +1,61 @@
+using GMac.Core.Symbolic;
+
+namespace GMac.Core.CodeGeneration.Passes;
+
+/// <summary>
+/// The values of a block's expressions as canonical polynomials, read through the temporaries
+/// that are polynomials of earlier names; a temporary that is not (it divides or calls) stays a
+/// variable of its own. Two expressions with the same value here are equal for
+/// every input, so a rewrite may swap one for the other. Values past a few dozen terms are not
+/// followed: comparing them would cost more than the rewrites that ask are worth.
+/// </summary>
+internal sealed class PolynomialValues
+{
+    public const int MaxTerms = 64;
+
+    private readonly Dictionary<string, Scalar> _polynomial = new(StringComparer.Ordinal);
+    private readonly Dictionary<Expr, Scalar?> _lifted = new();
+    private readonly Dictionary<Scalar, Scalar?> _expanded = new();
+
+    public PolynomialValues(CodeBlock block)
+    {
+        foreach (var temp in block.Temporaries)
+            if (Of(temp.Value) is { } value)
+                _polynomial[temp.Target] = value;
+    }
+
+    /// <summary>The temporaries whose value is a polynomial, with that value.</summary>
+    public IReadOnlyDictionary<string, Scalar> Polynomials => _polynomial;
+
+    /// <summary>The value of a temporary or input by name: its polynomial, or the variable itself.</summary>
+    public Scalar OfName(string name) => _polynomial.TryGetValue(name, out var p) ? p : Scalar.Variable(name);
+
+    /// <summary>The expression's value, or null when it is not a polynomial of the block's names or grows too large.</summary>
+    public Scalar? Of(Expr e)
+    {
+        if (!PolynomialLifting.TryLift(e, _lifted, out var lifted) || lifted.Terms.Count > MaxTerms) return null;
+        if (_expanded.TryGetValue(lifted, out var known)) return known;
+        return _expanded[lifted] = Expand(lifted);
+    }
+
+    private Scalar? Expand(Scalar lifted)
+    {
+        if (!lifted.Variables.Any(_polynomial.ContainsKey)) return lifted;
+        var sum = Scalar.Zero;
+        foreach (var term in lifted.Terms)
+        {
+            long size = 1;
+            var product = Scalar.Constant(term.Coefficient);
+            foreach (var f in term.Monomial.Factors)
+            {
+                var value = f.Atom.Kind == AtomKind.Variable && _polynomial.TryGetValue(f.Atom.Name, out var p) ? p : f.Atom.AsScalar();
+                for (var k = 0; k < f.Power; k++) size *= value.Terms.Count;
+                if (f.Power < 0 || size > 4 * MaxTerms) return null;
+                product *= Scalar.IntegerPower(value, f.Power);
+            }
+            sum += product;
+            if (sum.Terms.Count > 4 * MaxTerms) return null;
+        }
+        return sum.Terms.Count > MaxTerms ? null : sum;
+    }
+}
