@@ -13,22 +13,28 @@ internal sealed class PolynomialValues
 {
     public const int MaxTerms = 64;
 
-    private readonly Dictionary<string, Scalar> _polynomial = new(StringComparer.Ordinal);
+    private readonly Dictionary<string, Expr> _definitions = new(StringComparer.Ordinal);
+    private readonly Dictionary<string, Scalar?> _temporaries = new(StringComparer.Ordinal);
     private readonly Dictionary<Expr, Scalar?> _lifted = new();
     private readonly Dictionary<Scalar, Scalar?> _expanded = new();
 
+    /// <summary>Temporaries are read on demand: most passes ask about a few statements of a large block.</summary>
     public PolynomialValues(CodeBlock block)
     {
-        foreach (var temp in block.Temporaries)
-            if (Of(temp.Value) is { } value)
-                _polynomial[temp.Target] = value;
+        foreach (var temp in block.Temporaries) _definitions[temp.Target] = temp.Value;
     }
 
-    /// <summary>The temporaries whose value is a polynomial, with that value.</summary>
-    public IReadOnlyDictionary<string, Scalar> Polynomials => _polynomial;
-
     /// <summary>The value of a temporary or input by name: its polynomial, or the variable itself.</summary>
-    public Scalar OfName(string name) => _polynomial.TryGetValue(name, out var p) ? p : Scalar.Variable(name);
+    public Scalar OfName(string name) => Polynomial(name) ?? Scalar.Variable(name);
+
+    /// <summary>The polynomial a temporary holds, or null for an input or a temporary that is not one.</summary>
+    private Scalar? Polynomial(string name)
+    {
+        if (_temporaries.TryGetValue(name, out var known)) return known;
+        if (!_definitions.TryGetValue(name, out var definition)) return null;
+        _temporaries[name] = null; // single assignment: a definition never reads itself, this only guards malformed blocks
+        return _temporaries[name] = Of(definition);
+    }
 
     /// <summary>The expression's value, or null when it is not a polynomial of the block's names or grows too large.</summary>
     public Scalar? Of(Expr e)
@@ -40,7 +46,7 @@ internal sealed class PolynomialValues
 
     private Scalar? Expand(Scalar lifted)
     {
-        if (!lifted.Variables.Any(_polynomial.ContainsKey)) return lifted;
+        if (!lifted.Variables.Any(v => Polynomial(v) is not null)) return lifted;
         var sum = Scalar.Zero;
         foreach (var term in lifted.Terms)
         {
@@ -48,7 +54,7 @@ internal sealed class PolynomialValues
             var product = Scalar.Constant(term.Coefficient);
             foreach (var f in term.Monomial.Factors)
             {
-                var value = f.Atom.Kind == AtomKind.Variable && _polynomial.TryGetValue(f.Atom.Name, out var p) ? p : f.Atom.AsScalar();
+                var value = (f.Atom.Kind == AtomKind.Variable ? Polynomial(f.Atom.Name) : null) ?? f.Atom.AsScalar();
                 for (var k = 0; k < f.Power; k++) size *= value.Terms.Count;
                 if (f.Power < 0 || size > 4 * MaxTerms) return null;
                 product *= Scalar.IntegerPower(value, f.Power);

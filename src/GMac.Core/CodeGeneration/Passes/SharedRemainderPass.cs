@@ -10,7 +10,7 @@ namespace GMac.Core.CodeGeneration.Passes;
 /// (vₓ(a_y² + a_z²) − aₓ(a_y v_y + a_z v_z))/|a|², whose vₓaₓ² terms cancelled so that every
 /// component is computed apart; division by |a|² gives vₓ − aₓ·(a·v)/|a|², sharing the dot
 /// product and the quotient as a hand derivation does. Every lead atom of D is tried for each
-/// numerator; the remainder shared by the most saving set of fractions is taken, and only when
+/// numerator; the remainder shared by the most saving set of two or more fractions is taken, and only when
 /// the block then costs less (repeated subexpressions counted once).
 /// </summary>
 public sealed class SharedRemainderPass : IOptimizerPass
@@ -43,7 +43,8 @@ public sealed class SharedRemainderPass : IOptimizerPass
     {
         var values = new PolynomialValues(block);
         var options = new Dictionary<(Scalar D, Scalar G), List<Option>>();
-        foreach (var fraction in Fractions(block, values))
+        // one fraction alone cannot share its remainder
+        foreach (var fraction in Fractions(block, values).GroupBy(f => f.Denominator).Where(g => g.Count() > 1).SelectMany(g => g))
         foreach (var first in Rewrites.PolynomialRemainder.Candidates(fraction.Denominator))
         {
             if (!Rewrites.PolynomialRemainder.TryDivide(fraction.Numerator, fraction.Denominator, first, out var q, out var r)) continue;
@@ -52,13 +53,14 @@ public sealed class SharedRemainderPass : IOptimizerPass
             if (!options.TryGetValue((fraction.Denominator, g), out var list)) options[(fraction.Denominator, g)] = list = [];
             if (list.All(o => o.Of.Index != fraction.Index)) list.Add(new Option(fraction, q, c, m));
         }
-        if (options.Count == 0) return null;
+        if (!options.Values.Any(list => list.Count > 1)) return null;
 
         var baseline = Rewrites.SharedCost.Of(new DeadCodePass().Run(block));
         CodeBlock? best = null;
         var bestCost = baseline;
         foreach (var ((_, g), list) in options)
         {
+            if (list.Count < 2) continue;
             var candidate = new DeadCodePass().Run(Apply(block, g, list));
             var cost = Rewrites.SharedCost.Of(candidate);
             if (cost < bestCost) (best, bestCost) = (candidate, cost);

@@ -20,15 +20,18 @@ public sealed class SumOfSquaresPass : IOptimizerPass
 
     public CodeBlock Run(CodeBlock block)
     {
+        if (block.Statements.Any(s => s is VerbatimStatement)) return block;
         var position = new Dictionary<string, int>(StringComparer.Ordinal);
         for (var i = 0; i < block.Statements.Count; i++)
             if (block.Statements[i] is AssignmentStatement { IsOutput: false } t) position[t.Target] = i;
         if (position.Count < 2) return block;
 
-        var values = new PolynomialValues(block);
-        var squares = CandidateSums(block, position, values);
-        if (squares.Count == 0) return block;
+        // Two numeric samples rule out almost every (sum, set) pair before any polynomial is expanded.
+        var samples = new[] { Sample(block, 1), Sample(block, 2) };
+        var sets = CandidateSets(block, position, samples);
+        if (sets.Count == 0) return block;
 
+        var values = new PolynomialValues(block);
         var changed = false;
         var statements = block.Statements.ToArray();
         for (var i = 0; i < statements.Length; i++)
@@ -36,13 +39,7 @@ public sealed class SumOfSquaresPass : IOptimizerPass
             var index = i;
             var s = statements[i];
             var exprs = s.Expressions.Select(e => BlockRewriting.ReplaceNodes(e, node =>
-            {
-                if (node is not SumExpr || values.Of(node) is not { } p || p.Terms.Count < 2) return null;
-                if (!squares.TryGetValue(Monic(p, out var scale), out var set)) return null;
-                if (set.Names.Any(n => position[n] >= index)) return null;
-                var replacement = Squares(set.Names, scale / set.Scale);
-                return OperationCost(replacement) < OperationCost(node) ? replacement : null;
-            })).ToArray();
+                node is SumExpr sum && Match(sum, index, sets, position, samples, values) is { } replacement ? replacement : null)).ToArray();
             if (exprs.Where((e, k) => !ReferenceEquals(e, s.Expressions[k])).Any())
             {
                 statements[i] = s.WithExpressions(exprs);
@@ -52,11 +49,42 @@ public sealed class SumOfSquaresPass : IOptimizerPass
         return changed ? new DeadCodePass().Run(block.WithStatements(statements)) : block;
     }
 
-    /// <summary>Σ t² for each set of temporaries read together, by its monic value.</summary>
-    private static Dictionary<Scalar, (string[] Names, Rational Scale)> CandidateSums(CodeBlock block, Dictionary<string, int> position, PolynomialValues values)
+    /// <summary>A set of temporaries read together, with Σ t² at each sample.</summary>
+    private sealed record CandidateSet(string[] Names, double[] Sampled);
+
+    /// <summary>c·Σ t² for the first set whose sum of squares the node equals exactly, when that costs less.</summary>
+    private static Expr? Match(SumExpr node, int index, List<CandidateSet> sets, Dictionary<string, int> position, Dictionary<string, double>[] samples, PolynomialValues values)
     {
-        var sets = new HashSet<string>(StringComparer.Ordinal);
-        var sums = new Dictionary<Scalar, (string[] Names, Rational Scale)>();
+        var sampled = samples.Select(v => Evaluate(node, v)).ToArray();
+        if (sampled.Any(x => !double.IsFinite(x) || x == 0)) return null;
+        Scalar? p = null;
+        foreach (var set in sets)
+        {
+            var ratio = sampled[0] / set.Sampled[0];
+            if (Math.Abs(sampled[1] / set.Sampled[1] - ratio) > 1e-9 * Math.Abs(ratio)) continue;
+            if (set.Names.Any(n => position[n] >= index)) continue;
+            p ??= values.Of(node);
+            if (p is null || p.Terms.Count < 2) return null;
+            var squares = Scalar.Zero;
+            foreach (var n in set.Names)
+            {
+                var v = values.OfName(n);
+                squares += v * v;
+            }
+            if (squares.Terms.Count != p.Terms.Count) continue;
+            var scale = p.Terms[0].Coefficient / squares.Terms[0].Coefficient;
+            if (Scalar.Scale(squares, scale) != p) continue;
+            var replacement = Squares(set.Names, scale);
+            return OperationCost(replacement) < OperationCost(node) ? replacement : null;
+        }
+        return null;
+    }
+
+    /// <summary>The sets of two or more temporaries read by one sum or one statement, with their sampled sums of squares.</summary>
+    private static List<CandidateSet> CandidateSets(CodeBlock block, Dictionary<string, int> position, Dictionary<string, double>[] samples)
+    {
+        var seen = new HashSet<string>(StringComparer.Ordinal);
+        var sets = new List<CandidateSet>();
         foreach (var s in block.Statements)
         foreach (var e in s.Expressions)
         foreach (var node in e.DescendantsAndSelf())
@@ -64,24 +92,33 @@ public sealed class SumOfSquaresPass : IOptimizerPass
             if (node is not SumExpr && !ReferenceEquals(node, e)) continue;
             var names = node.DescendantsAndSelf().OfType<VariableExpr>().Select(v => v.Name)
                 .Where(position.ContainsKey).Distinct().Order(StringComparer.Ordinal).ToArray();
-            if (names.Length < 2 || names.Length > MaxSetSize || !sets.Add(string.Join(",", names))) continue;
-            var sum = Scalar.Zero;
-            foreach (var n in names)
-            {
-                var v = values.OfName(n);
-                sum += v * v;
-            }
-            if (sum.Terms.Count < 2 || sum.Terms.Count > PolynomialValues.MaxTerms) continue;
-            sums.TryAdd(Monic(sum, out var scale), (names, scale));
+            if (names.Length < 2 || names.Length > MaxSetSize || !seen.Add(string.Join(",", names))) continue;
+            var sampled = samples.Select(v => names.Sum(n => v[n] * v[n])).ToArray();
+            if (sampled.All(x => double.IsFinite(x) && x != 0)) sets.Add(new CandidateSet(names, sampled));
         }
-        return sums;
+        return sets;
     }
 
-    /// <summary>p divided by the coefficient of its first term, which is returned in <paramref name="scale"/>.</summary>
-    private static Scalar Monic(Scalar p, out Rational scale)
+    /// <summary>Every name of the block at one pseudo-random point (inputs in [0.5, 2]).</summary>
+    private static Dictionary<string, double> Sample(CodeBlock block, int seed)
     {
-        scale = p.Terms[0].Coefficient;
-        return scale == Rational.One ? p : Scalar.Scale(p, Rational.One / scale);
+        var random = new Random(seed);
+        var values = block.InputText.Keys.Order(StringComparer.Ordinal).ToDictionary(k => k, _ => 0.5 + 1.5 * random.NextDouble(), StringComparer.Ordinal);
+        foreach (var a in block.Statements.OfType<AssignmentStatement>())
+            values[a.Target] = Evaluate(a.Value, values);
+        return values;
+    }
+
+    private static double Evaluate(Expr e, Dictionary<string, double> values)
+    {
+        try
+        {
+            return ExprEvaluator.Evaluate(e, values);
+        }
+        catch (Exception ex) when (ex is KeyNotFoundException or InvalidOperationException or ArgumentException)
+        {
+            return double.NaN; // a name or function the evaluator does not know: never matches
+        }
     }
 
     private static Expr Squares(IEnumerable<string> names, Rational scale)
