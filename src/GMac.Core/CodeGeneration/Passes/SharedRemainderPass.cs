@@ -68,28 +68,32 @@ public sealed class SharedRemainderPass : IOptimizerPass
         return best;
     }
 
-    /// <summary>Assignments N·r with r = 1/D a temporary, or N/D, whose N and D are polynomials.</summary>
+    /// <summary>
+    /// Assignments N·r with r = 1/D a temporary, or N/D, whose N and D are polynomials, and that
+    /// share their written denominator with another: only those are lifted, which spares most
+    /// blocks any polynomial work.
+    /// </summary>
     private static IEnumerable<Fraction> Fractions(CodeBlock block, PolynomialValues values)
     {
         var reciprocals = new Dictionary<string, Expr>(StringComparer.Ordinal);
+        var shapes = new List<(int Index, bool Negated, Expr Numerator, Expr Denominator, Expr Reciprocal)>();
         for (var i = 0; i < block.Statements.Count; i++)
         {
             if (block.Statements[i] is not AssignmentStatement a) continue;
             if (!a.IsOutput && a.Value is QuotientExpr { Numerator: ConstantExpr { Value: 1 } } rcp) reciprocals[a.Target] = rcp.Denominator;
             var negated = a.Value is NegateExpr;
             var e = a.Value is NegateExpr n ? n.Operand : a.Value;
-            Expr? numerator = null, denominator = null, reciprocal = null;
             if (e is QuotientExpr q && q.Numerator is not ConstantExpr)
-                (numerator, denominator, reciprocal) = (q.Numerator, q.Denominator, q.Denominator);
-            else if (e is ProductExpr p)
-            {
-                var r = p.Children.OfType<VariableExpr>().FirstOrDefault(v => reciprocals.ContainsKey(v.Name));
-                if (r is not null)
-                    (numerator, denominator, reciprocal) = (ExprFactory.Product(p.Children.Where(c => !ReferenceEquals(c, r))), reciprocals[r.Name], r);
-            }
-            if (numerator is null || values.Of(numerator) is not { } num || values.Of(denominator!) is not { } den) continue;
+                shapes.Add((i, negated, q.Numerator, q.Denominator, q.Denominator));
+            else if (e is ProductExpr p && p.Children.OfType<VariableExpr>().FirstOrDefault(v => reciprocals.ContainsKey(v.Name)) is { } r)
+                shapes.Add((i, negated, ExprFactory.Product(p.Children.Where(c => !ReferenceEquals(c, r))), reciprocals[r.Name], r));
+        }
+        foreach (var group in shapes.GroupBy(f => f.Reciprocal).Where(g => g.Count() > 1))
+        foreach (var (index, negated, numerator, denominator, reciprocal) in group)
+        {
+            if (values.Of(numerator) is not { } num || values.Of(denominator) is not { } den) continue;
             if (num.Terms.Count < 2 || num.Terms.Count > MaxNumeratorTerms || den.Terms.Count < 2 || den.Terms.Count > MaxDenominatorTerms) continue;
-            yield return new Fraction(i, negated, num, den, reciprocal!);
+            yield return new Fraction(index, negated, num, den, reciprocal);
         }
     }
 

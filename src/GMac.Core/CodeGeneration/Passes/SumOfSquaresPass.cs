@@ -27,7 +27,7 @@ public sealed class SumOfSquaresPass : IOptimizerPass
         if (position.Count < 2) return block;
 
         // Two numeric samples rule out almost every (sum, set) pair before any polynomial is expanded.
-        var samples = new[] { Sample(block, 1), Sample(block, 2) };
+        var samples = Samples(block);
         var sets = CandidateSets(block, position, samples);
         if (sets.Count == 0) return block;
 
@@ -50,19 +50,25 @@ public sealed class SumOfSquaresPass : IOptimizerPass
     }
 
     /// <summary>A set of temporaries read together, with Σ t² at each sample.</summary>
-    private sealed record CandidateSet(string[] Names, double[] Sampled);
+    private sealed record CandidateSet(string[] Names, double First, double Second);
+
+    private static bool Usable(double x) => double.IsFinite(x) && x != 0;
 
     /// <summary>c·Σ t² for the first set whose sum of squares the node equals exactly, when that costs less.</summary>
-    private static Expr? Match(SumExpr node, int index, List<CandidateSet> sets, Dictionary<string, int> position, Dictionary<string, double>[] samples, PolynomialValues values)
+    private static Expr? Match(SumExpr node, int index, List<CandidateSet> sets, Dictionary<string, int> position, Dictionary<string, (double, double)> samples, PolynomialValues values)
     {
-        var sampled = samples.Select(v => Evaluate(node, v)).ToArray();
-        if (sampled.Any(x => !double.IsFinite(x) || x == 0)) return null;
+        var (first, second) = Evaluate(node, samples);
+        if (!Usable(first) || !Usable(second)) return null;
         Scalar? p = null;
+        int? nodeCost = null;
         foreach (var set in sets)
         {
-            var ratio = sampled[0] / set.Sampled[0];
-            if (Math.Abs(sampled[1] / set.Sampled[1] - ratio) > 1e-9 * Math.Abs(ratio)) continue;
+            var ratio = first / set.First;
+            if (Math.Abs(second / set.Second - ratio) > 1e-9 * Math.Abs(ratio)) continue;
             if (set.Names.Any(n => position[n] >= index)) continue;
+            // the cost test comes before any expansion: most numeric matches are the squares already written out
+            var squaresCost = 2 * set.Names.Length - 1 + (Math.Abs(Math.Abs(ratio) - 1) < 1e-9 ? 0 : 1);
+            if (squaresCost >= (nodeCost ??= OperationCost(node))) continue;
             p ??= values.Of(node);
             if (p is null || p.Terms.Count < 2) return null;
             var squares = Scalar.Zero;
@@ -81,43 +87,117 @@ public sealed class SumOfSquaresPass : IOptimizerPass
     }
 
     /// <summary>The sets of two or more temporaries read by one sum or one statement, with their sampled sums of squares.</summary>
-    private static List<CandidateSet> CandidateSets(CodeBlock block, Dictionary<string, int> position, Dictionary<string, double>[] samples)
+    private static List<CandidateSet> CandidateSets(CodeBlock block, Dictionary<string, int> position, Dictionary<string, (double First, double Second)> samples)
     {
         var seen = new HashSet<string>(StringComparer.Ordinal);
         var sets = new List<CandidateSet>();
+        // the temporaries a node reads (null past the largest set tried); sums and whole expressions record theirs
+        string[]? Visit(Expr node, bool top)
+        {
+            string[]? names;
+            if (node is VariableExpr v) names = position.ContainsKey(v.Name) ? [v.Name] : [];
+            else if (node.IsLeaf) names = [];
+            else
+            {
+                names = [];
+                foreach (var c in node.Children)
+                {
+                    var inner = Visit(c, false);
+                    names = names is null || inner is null ? null : Union(names, inner);
+                }
+            }
+            if (names is null || names.Length < 2 || node is not SumExpr && !top || !seen.Add(string.Join(",", names))) return names;
+            double first = 0, second = 0;
+            foreach (var n in names)
+            {
+                var (x, y) = samples[n];
+                first += x * x;
+                second += y * y;
+            }
+            if (Usable(first) && Usable(second)) sets.Add(new CandidateSet(names, first, second));
+            return names;
+        }
         foreach (var s in block.Statements)
         foreach (var e in s.Expressions)
-        foreach (var node in e.DescendantsAndSelf())
-        {
-            if (node is not SumExpr && !ReferenceEquals(node, e)) continue;
-            var names = node.DescendantsAndSelf().OfType<VariableExpr>().Select(v => v.Name)
-                .Where(position.ContainsKey).Distinct().Order(StringComparer.Ordinal).ToArray();
-            if (names.Length < 2 || names.Length > MaxSetSize || !seen.Add(string.Join(",", names))) continue;
-            var sampled = samples.Select(v => names.Sum(n => v[n] * v[n])).ToArray();
-            if (sampled.All(x => double.IsFinite(x) && x != 0)) sets.Add(new CandidateSet(names, sampled));
-        }
+            Visit(e, true);
         return sets;
     }
 
-    /// <summary>Every name of the block at one pseudo-random point (inputs in [0.5, 2]).</summary>
-    private static Dictionary<string, double> Sample(CodeBlock block, int seed)
+    /// <summary>The sorted union of two sorted name lists, null past the largest set tried.</summary>
+    private static string[]? Union(string[] a, string[] b)
     {
-        var random = new Random(seed);
-        var values = block.InputText.Keys.Order(StringComparer.Ordinal).ToDictionary(k => k, _ => 0.5 + 1.5 * random.NextDouble(), StringComparer.Ordinal);
+        if (b.Length == 0 || ReferenceEquals(a, b)) return a;
+        if (a.Length == 0) return b;
+        var merged = a.Union(b, StringComparer.Ordinal).Order(StringComparer.Ordinal).ToArray();
+        return merged.Length > MaxSetSize ? null : merged;
+    }
+
+    /// <summary>
+    /// Every name of the block at two pseudo-random points (inputs in [0.5, 2]). Two samples rule
+    /// out almost every (sum, set) pair before any polynomial is expanded.
+    /// </summary>
+    private static Dictionary<string, (double First, double Second)> Samples(CodeBlock block)
+    {
+        var (first, second) = (new Random(1), new Random(2));
+        var values = new Dictionary<string, (double, double)>(StringComparer.Ordinal);
+        foreach (var input in block.InputText.Keys.Order(StringComparer.Ordinal))
+            values[input] = (0.5 + 1.5 * first.NextDouble(), 0.5 + 1.5 * second.NextDouble());
         foreach (var a in block.Statements.OfType<AssignmentStatement>())
             values[a.Target] = Evaluate(a.Value, values);
         return values;
     }
 
-    private static double Evaluate(Expr e, Dictionary<string, double> values)
+    /// <summary>An expression at both samples at once; NaN for a name or function without a value.</summary>
+    private static (double First, double Second) Evaluate(Expr e, Dictionary<string, (double First, double Second)> values)
     {
-        try
+        switch (e)
         {
-            return ExprEvaluator.Evaluate(e, values);
-        }
-        catch (Exception ex) when (ex is KeyNotFoundException or InvalidOperationException or ArgumentException)
-        {
-            return double.NaN; // a name or function the evaluator does not know: never matches
+            case ConstantExpr c: return (c.Value, c.Value);
+            case VariableExpr v: return values.TryGetValue(v.Name, out var known) ? known : (double.NaN, double.NaN);
+            case SumExpr:
+            {
+                double x = 0, y = 0;
+                foreach (var c in e.Children)
+                {
+                    var (cx, cy) = Evaluate(c, values);
+                    (x, y) = (x + cx, y + cy);
+                }
+                return (x, y);
+            }
+            case ProductExpr:
+            {
+                double x = 1, y = 1;
+                foreach (var c in e.Children)
+                {
+                    var (cx, cy) = Evaluate(c, values);
+                    (x, y) = (x * cx, y * cy);
+                }
+                return (x, y);
+            }
+            case NegateExpr n:
+            {
+                var (x, y) = Evaluate(n.Operand, values);
+                return (-x, -y);
+            }
+            case QuotientExpr q:
+            {
+                var (nx, ny) = Evaluate(q.Numerator, values);
+                var (dx, dy) = Evaluate(q.Denominator, values);
+                return (nx / dx, ny / dy);
+            }
+            case PowerExpr p:
+            {
+                var (x, y) = Evaluate(p.Base, values);
+                return (Math.Pow(x, p.Exponent), Math.Pow(y, p.Exponent));
+            }
+            case CallExpr call:
+            {
+                var args = call.Children.Select(c => Evaluate(c, values)).ToArray();
+                var fx = MathFunctions.TryEvaluate(call.Function, args.Select(a => a.First).ToArray(), out var rx) ? rx : double.NaN;
+                var fy = MathFunctions.TryEvaluate(call.Function, args.Select(a => a.Second).ToArray(), out var ry) ? ry : double.NaN;
+                return (fx, fy);
+            }
+            default: return (double.NaN, double.NaN);
         }
     }
 
