@@ -53,30 +53,25 @@ public sealed class GramSchmidtRejectionKernel : GaKernel<Vec3Triple, Vec3Triple
         double tmp0 = v.A.z * v.A.z;
         double tmp1 = v.A.y * v.A.y;
         double tmp2 = v.A.x * v.A.x;
-        double tmp3 = tmp1 + tmp2;
-        double tmp4 = 1.0 / (tmp0 + tmp3);
-        double tmp5 = v.B.z * v.A.z;
-        double tmp6 = v.B.y * v.A.y;
-        double tmp7 = tmp1 + tmp0;
-        double tmp8 = (v.B.x * tmp7 - v.A.x * (tmp6 + tmp5)) * tmp4;
-        double tmp9 = v.B.x * v.A.x;
-        double tmp10 = tmp0 + tmp2;
-        double tmp11 = (v.B.y * tmp10 - v.A.y * (tmp9 + tmp5)) * tmp4;
-        double tmp12 = (v.B.z * tmp3 - v.A.z * (tmp9 + tmp6)) * tmp4;
-        double tmp13 = v.A.x * tmp11 - v.A.y * tmp8;
-        double tmp14 = v.A.z * tmp8 - v.A.x * tmp12;
-        double tmp15 = v.A.y * tmp12;
-        double tmp16 = tmp15 - v.A.z * tmp11;
+        double tmp3 = tmp2 + tmp1;
+        double tmp4 = (v.A.x * v.B.x + v.A.y * v.B.y + v.A.z * v.B.z) / (tmp0 + tmp3);
+        double tmp5 = v.B.x - v.A.x * tmp4;
+        double tmp6 = v.B.y - v.A.y * tmp4;
+        double tmp7 = v.B.z - v.A.z * tmp4;
+        double tmp8 = v.A.x * tmp6 - v.A.y * tmp5;
+        double tmp9 = v.A.z * tmp5 - v.A.x * tmp7;
+        double tmp10 = v.A.y * tmp7;
+        double tmp11 = tmp10 - v.A.z * tmp6;
         w.A.x = v.A.x;
         w.A.y = v.A.y;
         w.A.z = v.A.z;
-        w.B.x = tmp8;
-        w.B.y = tmp11;
-        w.B.z = tmp12;
-        double tmp17 = (v.C.y * tmp14 + v.C.x * tmp16 + v.C.z * tmp13) / (tmp8 * (tmp8 * tmp7 - 2.0 * v.A.x * (tmp11 * v.A.y + tmp12 * v.A.z)) + tmp11 * (tmp11 * tmp10 - 2.0 * v.A.z * tmp15) + tmp12 * tmp12 * tmp3);
-        w.C.x = tmp16 * tmp17;
-        w.C.y = tmp14 * tmp17;
-        w.C.z = tmp13 * tmp17;
+        w.B.x = tmp5;
+        w.B.y = tmp6;
+        w.B.z = tmp7;
+        double tmp12 = (v.C.y * tmp9 + v.C.x * tmp11 + v.C.z * tmp8) / (tmp8 * tmp8 + tmp9 * tmp9 + tmp11 * tmp11);
+        w.C.x = tmp11 * tmp12;
+        w.C.y = tmp9 * tmp12;
+        w.C.z = tmp8 * tmp12;
         #endregion
     }
 

@@ -19,6 +19,7 @@ public sealed class Optimizer
         block = P(new TranslationInvariancePass(), block); // before any pass shapes sums for sharing
         block = P(dead, P(copy, P(fold, block)));
         block = P(dead, P(new AlgebraicValueNumberingPass(), block));
+        block = P(new SharedRemainderPass(), block);
         block = P(fold, P(strength, block));
         for (var round = 0; round < 8; round++)
         {
@@ -30,6 +31,7 @@ public sealed class Optimizer
             block = P(fold, P(factor, block));
             if ((block.Statistics(), block.Statements.Count) == before) break;
         }
+        block = P(new SumOfSquaresPass(), block);
         block = P(strength, block); // CSE may expose repeated denominators
         block = P(new SquareRootReciprocalPass(), P(new ConstantAbsorptionPass(), block));
         block = P(new ReciprocalDeferralPass(), block);
