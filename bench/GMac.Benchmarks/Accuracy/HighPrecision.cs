@@ -28,6 +28,7 @@ public static class HighPrecision
         "log" => Log(args[0]),
         "abs" => args[0].Abs(),
         "atan2" => Atan2(args[0], args[1]),
+        "acos" => Acos(args[0]),
         "pow" => Pow(args[0], args[1]),
         _ => throw new ArgumentException($"no high-precision version of '{function}'", nameof(function)),
     };
@@ -93,6 +94,9 @@ public static class HighPrecision
         if (x.Sign < 0) return y.Sign >= 0 ? Round(Atan(y / x) + Pi) : Round(Atan(y / x) - Pi);
         return y.Sign > 0 ? Pi / 2 : y.Sign < 0 ? -Pi / 2 : Rational.Zero;
     }
+
+    /// <summary>acos x = atan2(√(1 − x²), x) on [−1, 1].</summary>
+    public static Rational? Acos(Rational x) => x.Abs() > Rational.One ? null : Atan2(Sqrt(1 - x * x)!.Value, x);
 
     public static Rational? Pow(Rational a, Rational b)
     {

@@ -78,15 +78,16 @@ public sealed class RotorInterpolateKernel : GaKernel<RotorPair, Rotor3>
         //GMac.Bind("r.e3^e1", "<r.y>");
         //GMac.Bind("r.e1^e2", "<r.z>");
         double tmp0 = p.R1.w * p.R2.w + p.R1.x * p.R2.x + p.R1.y * p.R2.y + p.R1.z * p.R2.z;
-        double tmp1 = Math.Sqrt(1.0 - tmp0 * tmp0);
-        double tmp2 = Math.Atan2(tmp1, tmp0) * p.Alpha;
-        var (tmp3, tmp5) = Math.SinCos(tmp2);
-        double tmp4 = tmp3 / tmp1;
-        double tmp6 = tmp5 - tmp0 * tmp4;
-        r.w = p.R1.w * tmp6 + p.R2.w * tmp4;
-        r.x = p.R1.x * tmp6 + p.R2.x * tmp4;
-        r.y = p.R1.y * tmp6 + p.R2.y * tmp4;
-        r.z = p.R1.z * tmp6 + p.R2.z * tmp4;
+        double tmp1 = Math.Acos(tmp0);
+        double tmp2 = Math.Sin(tmp1);
+        double tmp3 = tmp1 * p.Alpha;
+        var (tmp4, tmp6) = Math.SinCos(tmp3);
+        double tmp5 = tmp4 / tmp2;
+        double tmp7 = tmp6 - tmp0 * tmp5;
+        r.w = p.R1.w * tmp7 + p.R2.w * tmp5;
+        r.x = p.R1.x * tmp7 + p.R2.x * tmp5;
+        r.y = p.R1.y * tmp7 + p.R2.y * tmp5;
+        r.z = p.R1.z * tmp7 + p.R2.z * tmp5;
         #endregion
     }
 

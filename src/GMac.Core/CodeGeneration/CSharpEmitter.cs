@@ -90,6 +90,7 @@ public static partial class CSharpEmitter
         "sin" => "Math.Sin",
         "cos" => "Math.Cos",
         "tan" => "Math.Tan",
+        "acos" => "Math.Acos",
         "sqrt" => "Math.Sqrt",
         "exp" => "Math.Exp",
         "log" => "Math.Log",

@@ -1,6 +1,6 @@
 namespace GMac.Core.CodeGeneration;
 
-/// <summary>A call of a math function by its neutral name (sin, cos, tan, sqrt, exp, log, atan2, abs, pow).</summary>
+/// <summary>A call of a math function by its neutral name (sin, cos, tan, acos, sqrt, exp, log, atan2, abs, pow).</summary>
 public sealed class CallExpr : Expr
 {
     private readonly Expr[] _arguments;

@@ -5,7 +5,7 @@ public static class MathFunctions
 {
     public static readonly IReadOnlySet<string> Names = new HashSet<string>(StringComparer.Ordinal)
     {
-        "sin", "cos", "tan", "sqrt", "exp", "log", "atan2", "abs", "pow",
+        "sin", "cos", "tan", "acos", "sqrt", "exp", "log", "atan2", "abs", "pow",
     };
 
     public static bool TryEvaluate(string function, double[] args, out double value)
@@ -15,6 +15,7 @@ public static class MathFunctions
             "sin" when args.Length == 1 => Math.Sin(args[0]),
             "cos" when args.Length == 1 => Math.Cos(args[0]),
             "tan" when args.Length == 1 => Math.Tan(args[0]),
+            "acos" when args.Length == 1 => Math.Acos(args[0]),
             "sqrt" when args.Length == 1 => Math.Sqrt(args[0]),
             "exp" when args.Length == 1 => Math.Exp(args[0]),
             "log" when args.Length == 1 => Math.Log(args[0]),

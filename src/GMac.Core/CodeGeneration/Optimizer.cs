@@ -35,6 +35,7 @@ public sealed class Optimizer
         block = P(strength, block); // CSE may expose repeated denominators
         block = P(new SquareRootReciprocalPass(), P(new ConstantAbsorptionPass(), block));
         block = P(new ReciprocalDeferralPass(), block);
+        block = P(new ArcCosinePass(), block);
         block = P(new SineCosinePairingPass(), block); // last: later passes could inline the calls again
         block = P(new SignPlacementPass(), block); // signs only: no operation count changes
         return reuseTemporaries ? P(new TemporaryReusePass(), block) : block;

@@ -58,4 +58,14 @@ public class HighPrecision_Functions
         AssertClose(new Rational(3, 7), HighPrecision.Call("tan", [angle])!.Value);
         Assert.Equal(Math.PI, HighPrecision.Pi.ToDouble());
     }
+
+    [Fact]
+    public void Arc_cosine_inverts_cosine_on_its_domain_and_is_undefined_beyond()
+    {
+        foreach (var x in new[] { -1.0, -0.75, 0.0, 0.3, 0.999999, 1.0 })
+            Assert.Equal(Math.Acos(x), HighPrecision.Call("acos", [R(x)])!.Value.ToDouble(), 15);
+        var angle = HighPrecision.Acos(new Rational(2, 9))!.Value;
+        AssertClose(new Rational(2, 9), HighPrecision.Cos(angle));
+        Assert.Null(HighPrecision.Acos(new Rational(9, 8)));
+    }
 }

@@ -124,6 +124,7 @@ public sealed class AlgebraicValueNumberingPass : IOptimizerPass
                         ("sin", 1) => Scalar.Sin(args[0]),
                         ("cos", 1) => Scalar.Cos(args[0]),
                         ("tan", 1) => Scalar.Tan(args[0]),
+                        ("acos", 1) => Scalar.Acos(args[0]),
                         ("sqrt", 1) => Scalar.Sqrt(args[0]),
                         ("exp", 1) => Scalar.Exp(args[0]),
                         ("log", 1) => Scalar.Log(args[0]),
