@@ -56,7 +56,8 @@ public static class CodeGenerator
         // accuracy overrules cost only where the cheaper form loses far more than the others
         var best = ranked[GenerationProfile.Time("accuracy probe", () => AccuracyProbe.MostAccurateAffordable(ranked.Select(c => c.Block).ToList()))];
         var alternative = ranked.Skip(1).FirstOrDefault(c => c.Form != best.Form);
-        return new CodeGenerationResult(best.Block, best.Stats, best.Form, alternative.Block is null ? null : alternative.Stats);
+        // signs are placed on the kept form alone: that changes no count, so no choice above
+        return new CodeGenerationResult(Optimizer.Finish(best.Block), best.Stats, best.Form, alternative.Block is null ? null : alternative.Stats);
     }
 
     /// <summary>

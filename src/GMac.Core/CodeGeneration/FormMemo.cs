@@ -24,12 +24,12 @@ internal sealed class FormMemo
     public void Remember(SymbolicProgram program, IReadOnlyList<(string Name, Scalar Value)> temporaries, CodeBlock built) =>
         _programs.Add((program, temporaries.ToArray(), built));
 
-    /// <summary>The optimized block, from an earlier form whose built block had the same statements when there is one.</summary>
+    /// <summary>The reduced block (<see cref="Optimizer.Reduce"/>), from an earlier form whose built block had the same statements when there is one.</summary>
     public CodeBlock Optimized(CodeBlock built, string form)
     {
         foreach (var (b, optimized) in _blocks)
             if (ReferenceEquals(b, built) || b.HasSameStatements(built)) return optimized;
-        var result = GenerationProfile.Time($"optimize {form}", () => Optimizer.Optimize(built));
+        var result = GenerationProfile.Time($"optimize {form}", () => Optimizer.Reduce(built));
         _blocks.Add((built, result));
         return result;
     }

@@ -5,7 +5,13 @@ namespace GMac.Core.CodeGeneration;
 /// <summary>Runs the passes in an order where each one prepares work for the next, to a fixed point.</summary>
 public sealed class Optimizer
 {
-    public static CodeBlock Optimize(CodeBlock block, bool reuseTemporaries = false)
+    public static CodeBlock Optimize(CodeBlock block, bool reuseTemporaries = false) => Finish(Reduce(block), reuseTemporaries);
+
+    /// <summary>
+    /// The passes that can change what a block costs: what candidate forms are compared by. The
+    /// generator runs them once per form and <see cref="Finish"/> once, on the form it keeps.
+    /// </summary>
+    public static CodeBlock Reduce(CodeBlock block)
     {
         var fold = new ConstantFoldingPass();
         var copy = new CopyPropagationPass();
@@ -36,8 +42,13 @@ public sealed class Optimizer
         block = P(new SquareRootReciprocalPass(), P(new ConstantAbsorptionPass(), block));
         block = P(new ReciprocalDeferralPass(), block);
         block = P(new ArcCosinePass(), block);
-        block = P(new SineCosinePairingPass(), block); // last: later passes could inline the calls again
-        block = P(new SignPlacementPass(), block); // signs only: no operation count changes
+        return P(new SineCosinePairingPass(), block); // last: later passes could inline the calls again
+    }
+
+    /// <summary>Passes that change no operation count and no value: signs moved into subtractions, and optionally temporaries reused.</summary>
+    public static CodeBlock Finish(CodeBlock block, bool reuseTemporaries = false)
+    {
+        block = P(new SignPlacementPass(), block);
         return reuseTemporaries ? P(new TemporaryReusePass(), block) : block;
     }
 

@@ -45,8 +45,8 @@ internal static class NormComplement
         }
         if (named.Count == 0) return;
         // readers last: their other arguments may hold a replaced root (atan2(√P, u))
-        var rootsOnly = new Dictionary<Atom, Scalar>();
-        foreach (var (reader, u, t) in renamedReads) replacements[reader] = Reading(reader, u, t, replacements, rootsOnly);
+        var rootMemo = new Dictionary<Atom, Scalar>();
+        foreach (var (reader, u, t) in renamedReads) replacements[reader] = Reading(reader, u, t, replacements, rootMemo);
 
         var memo = new Dictionary<Atom, Scalar>();
         foreach (var a in assignments)
