@@ -24,6 +24,26 @@ public sealed class CodeBlock
 
     public CodeBlock WithStatements(IEnumerable<CodeStatement> statements) => new(statements, InputText, OutputTargets);
 
+    private int? _structureHash;
+
+    /// <summary>A hash of the statements, equal for blocks with <see cref="HasSameStatements"/>; computed once.</summary>
+    internal int StructureHash => _structureHash ??= HashStatements();
+
+    private int HashStatements()
+    {
+        var h = Statements.Count;
+        foreach (var s in Statements)
+        {
+            h = s switch
+            {
+                AssignmentStatement a => StableHash.Combine(StableHash.Combine(h, StableHash.Of(a.Target)), a.Value.GetHashCode() ^ (a.IsOutput ? 1 : 0)),
+                VerbatimStatement v => v.Parts.Aggregate(h, (acc, p) => StableHash.Combine(acc, p.Value?.GetHashCode() ?? StableHash.Of(p.Text ?? ""))),
+                _ => StableHash.Combine(h, 17),
+            };
+        }
+        return h;
+    }
+
     public IEnumerable<AssignmentStatement> Temporaries => Statements.OfType<AssignmentStatement>().Where(a => !a.IsOutput);
 
     public IEnumerable<AssignmentStatement> Outputs => Statements.OfType<AssignmentStatement>().Where(a => a.IsOutput);
