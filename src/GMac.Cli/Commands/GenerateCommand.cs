@@ -52,6 +52,7 @@ internal static class GenerateCommand
         // it (the header is one line, easy to take off) and keeps its own entries in the index.
         var generateStats = stats || check;
         var index = GeneratedFileIndex.Open(context.CacheDirectory, context, check ? null : stats);
+        var pending = new List<string>();
         foreach (var path in files)
         {
             scanned++;
@@ -60,7 +61,23 @@ internal static class GenerateCommand
                 skipped++;
                 continue;
             }
-            var generation = GenerateFile(path, context, generateStats, error);
+            pending.Add(path);
+        }
+        // Files are generated on every core (the generator and its caches are shared and safe for
+        // that; no region depends on another file), then reported and written one by one in the
+        // order of the scan, so output and exit code do not depend on which thread finished first.
+        var generated = new (FileGeneration? Generation, string Errors)[pending.Count];
+        Parallel.For(0, pending.Count, new ParallelOptions { MaxDegreeOfParallelism = Environment.ProcessorCount }, i =>
+        {
+            using var fileErrors = new StringWriter();
+            generated[i] = (GenerateFile(pending[i], context, generateStats, fileErrors), fileErrors.ToString());
+        });
+        for (var i = 0; i < pending.Count; i++)
+        {
+            var path = pending[i];
+            var (generation, fileErrors) = generated[i];
+            generated[i] = default; // let the file's text go once it is handled
+            error.Write(fileErrors);
             if (generation is null)
             {
                 failed++;
