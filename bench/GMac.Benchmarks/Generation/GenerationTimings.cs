@@ -5,5 +5,13 @@ public sealed record GenerationTimings(
     IReadOnlyList<MacroGenerationTiming> Macros,
     double FirstPassMs,
     double LoadMs,
-    double LibraryColdMs,
-    double LibraryWarmMs);
+    IReadOnlyList<double> LibraryColdRuns,
+    double LibraryWarmMs,
+    IReadOnlyList<double> LibraryParallelColdRuns)
+{
+    /// <summary>The median of the cold runs of the whole library.</summary>
+    public double LibraryColdMs => GenerationTimer.Median(LibraryColdRuns);
+
+    /// <summary>The median of the cold runs with the macros shared out over every core.</summary>
+    public double LibraryParallelColdMs => GenerationTimer.Median(LibraryParallelColdRuns);
+}
