@@ -1,3 +1,4 @@
+using GMac.Core.Numerics;
 using GMac.Core.Symbolic;
 
 namespace GMac.Core.CodeGeneration.Passes;
@@ -28,6 +29,7 @@ internal static class TranslationGroups
             if (d.Terms.Count > 0) derivatives[v] = d;
         }
         var free = candidates.Where(derivatives.ContainsKey).ToList();
+        var position = candidates.Select((v, i) => (v, i)).ToDictionary(p => p.v, p => p.i, StringComparer.Ordinal);
         var groups = new List<List<string>>();
         while (free.Count >= 2)
         {
@@ -35,35 +37,48 @@ internal static class TranslationGroups
             free.RemoveAt(0);
             var group = new List<string> { anchor };
             var sum = derivatives[anchor];
+            var sumTerms = TermTable(sum);
             while (sum.Terms.Count > 0)
             {
+                // only the length of each trial sum matters: count it from the terms, and build the chosen one alone
                 string? best = null;
-                Scalar? bestSum = null;
+                var bestCount = int.MaxValue;
                 foreach (var v in free)
                 {
-                    var next = sum + derivatives[v];
-                    if (next.Terms.Count <= sum.Terms.Count && next.Terms.Count < (bestSum?.Terms.Count ?? int.MaxValue))
+                    var count = TermCountOfSum(sumTerms, derivatives[v]);
+                    if (count <= sum.Terms.Count && count < bestCount)
                     {
                         best = v;
-                        bestSum = next;
+                        bestCount = count;
                     }
                 }
                 if (best is null) break;
                 group.Add(best);
                 free.Remove(best);
-                sum = bestSum!;
+                sum += derivatives[best];
+                sumTerms = TermTable(sum);
             }
             if (sum.Terms.Count == 0) groups.Add(group);
             else free.AddRange(group.Skip(1)); // not a translation direction: give the others back
-            free.Sort((a, b) => IndexOf(candidates, a).CompareTo(IndexOf(candidates, b)));
+            free.Sort((a, b) => position[a].CompareTo(position[b]));
         }
         return groups;
     }
 
-    private static int IndexOf(IReadOnlyList<string> list, string item)
+    private static Dictionary<Monomial, Rational> TermTable(Scalar s)
     {
-        for (var i = 0; i < list.Count; i++)
-            if (list[i] == item) return i;
-        return -1;
+        var table = new Dictionary<Monomial, Rational>(s.Terms.Count);
+        foreach (var t in s.Terms) table[t.Monomial] = t.Coefficient;
+        return table;
+    }
+
+    /// <summary>How many terms <c>sum + addend</c> has: shared monomials merge, and vanish where the coefficients cancel.</summary>
+    private static int TermCountOfSum(Dictionary<Monomial, Rational> sum, Scalar addend)
+    {
+        var count = sum.Count + addend.Terms.Count;
+        foreach (var t in addend.Terms)
+            if (sum.TryGetValue(t.Monomial, out var c))
+                count -= c == -t.Coefficient ? 2 : 1;
+        return count;
     }
 }
