@@ -44,9 +44,17 @@ internal static class SymbolicInliner
                 var neighbourhood = readers.Select(r => r.Value).Prepend(temp.Value).ToArray();
                 if (refused.TryGetValue(temp, out var before) && before.AsSpan().SequenceEqual(neighbourhood)) continue;
                 var replacement = new Dictionary<string, Scalar>(StringComparer.Ordinal) { [temp.Name] = temp.Value };
-                var substituted = readers.Select(r => simplify(r.Value.Substitute(replacement))).ToList();
                 var keep = Cost(temp.Value) + readers.Sum(r => Cost(r.Value));
-                var inline = substituted.Sum(Cost);
+                // Costs are never negative: once the readers substituted so far cost more than
+                // keeping the temporary, the rest need not be simplified to refuse it.
+                var substituted = new List<Scalar>(readers.Count);
+                var inline = 0;
+                foreach (var r in readers)
+                {
+                    substituted.Add(simplify(r.Value.Substitute(replacement)));
+                    inline += Cost(substituted[^1]);
+                    if (inline > keep) break;
+                }
                 if (inline > keep)
                 {
                     refused[temp] = neighbourhood;
