@@ -173,20 +173,42 @@ public sealed partial class Scalar : IComparable<Scalar>
         if (b.TryGetConstant(out var cb)) return Scale(a, cb);
         if (x.Length == 1 && y.Length == 1)
             return Intern([new Term(x[0].Coefficient * y[0].Coefficient, x[0].Monomial * y[0].Monomial)]);
-        // Accumulate by monomial (reference keys, cached hashes), then sort once.
-        var sums = new Dictionary<Monomial, Rational>(x.Length * y.Length);
-        foreach (var s in x)
-        foreach (var t in y)
+        // Accumulate by monomial (reference keys, cached hashes), then sort once. The table and
+        // list are reused per thread: products are the engine's most frequent operation, and
+        // fresh ones were a large share of everything it allocated.
+        var sums = _productSums ?? new Dictionary<Monomial, Rational>();
+        var list = _productTerms ?? new List<Term>();
+        _productSums = null; // a product computed while this one runs (none today) gets its own
+        _productTerms = null;
+        try
         {
-            var m = s.Monomial * t.Monomial;
-            var c = s.Coefficient * t.Coefficient;
-            sums[m] = sums.TryGetValue(m, out var previous) ? previous + c : c;
+            foreach (var s in x)
+            foreach (var t in y)
+            {
+                var m = s.Monomial * t.Monomial;
+                var c = s.Coefficient * t.Coefficient;
+                sums[m] = sums.TryGetValue(m, out var previous) ? previous + c : c;
+            }
+            foreach (var (m, c) in sums)
+                if (!c.IsZero) list.Add(new Term(c, m));
+            return FromUnsorted(list);
         }
-        var list = new List<Term>(sums.Count);
-        foreach (var (m, c) in sums)
-            if (!c.IsZero) list.Add(new Term(c, m));
-        return FromUnsorted(list);
+        finally
+        {
+            // Clear costs the table's capacity: one grown by a rare huge product is not kept
+            if (sums.EnsureCapacity(0) <= MaxPooledProductTerms)
+            {
+                sums.Clear();
+                list.Clear();
+                _productSums = sums;
+                _productTerms = list;
+            }
+        }
     }
+
+    private const int MaxPooledProductTerms = 1024;
+    [ThreadStatic] private static Dictionary<Monomial, Rational>? _productSums;
+    [ThreadStatic] private static List<Term>? _productTerms;
 
     public static Scalar operator /(Scalar a, Scalar b) => a * Reciprocal(b);
 
