@@ -14,7 +14,9 @@ internal sealed class WeakInternTable<T>(IEqualityComparer<T> comparer) where T 
     private const int MinimumSweepThreshold = 1 << 12;
 
     private readonly object _lock = new();
-    private int[] _buckets = new int[1 << 10]; // index + 1 of the first entry in the chain, 0 for none
+    // index + 1 of the first entry in the chain, 0 for none; the length is always a power of two,
+    // so a bucket is the hash's low bits (the same as the remainder, without a division per look-up)
+    private int[] _buckets = new int[1 << 10];
     private Entry[] _entries = new Entry[1 << 10];
     private int _count;
     private int _sweepThreshold = MinimumSweepThreshold;
@@ -40,7 +42,7 @@ internal sealed class WeakInternTable<T>(IEqualityComparer<T> comparer) where T 
         var hash = comparer.GetHashCode(candidate);
         lock (_lock)
         {
-            var bucket = (hash & 0x7FFFFFFF) % _buckets.Length;
+            var bucket = hash & (_buckets.Length - 1);
             for (var i = _buckets[bucket]; i != 0; i = _entries[i - 1].Next)
             {
                 ref var entry = ref _entries[i - 1];
@@ -50,12 +52,12 @@ internal sealed class WeakInternTable<T>(IEqualityComparer<T> comparer) where T 
             if (_count == _sweepThreshold)
             {
                 SweepAndResize();
-                bucket = (hash & 0x7FFFFFFF) % _buckets.Length;
+                bucket = hash & (_buckets.Length - 1);
             }
             else if (_count == _entries.Length)
             {
                 Resize(_entries.Length * 2);
-                bucket = (hash & 0x7FFFFFFF) % _buckets.Length;
+                bucket = hash & (_buckets.Length - 1);
             }
             _entries[_count] = new Entry { Hash = hash, Next = _buckets[bucket], Handle = GCHandle.Alloc(candidate, GCHandleType.Weak) };
             _buckets[bucket] = ++_count;
@@ -85,7 +87,7 @@ internal sealed class WeakInternTable<T>(IEqualityComparer<T> comparer) where T 
         _buckets = new int[capacity];
         for (var i = 0; i < _count; i++)
         {
-            var bucket = (_entries[i].Hash & 0x7FFFFFFF) % capacity;
+            var bucket = _entries[i].Hash & (capacity - 1);
             _entries[i].Next = _buckets[bucket];
             _buckets[bucket] = i + 1;
         }
