@@ -24,8 +24,10 @@ public static partial class CSharpEmitter
             .SelectMany(text => IdentifierLike().Matches(text).Select(m => m.Value.TrimStart('@')))
             .ToHashSet(StringComparer.Ordinal);
         bool IsFree(string name) => !bound.Contains(name) && !options.IsNameTaken(name);
-        var prefix = CandidatePrefixes().First(p => Enumerable.Range(0, temps.Count).All(i => IsFree($"{p}{i}")));
+        var held = HeldOutputs(block);
+        var prefix = CandidatePrefixes().First(p => Enumerable.Range(0, temps.Count + held.Count).All(i => IsFree($"{p}{i}")));
         var tempName = temps.Select((t, i) => (t, i)).ToDictionary(x => x.t, x => $"{prefix}{x.i}", StringComparer.Ordinal);
+        var deferred = new List<(string Target, string Value)>();
 
         string VariableText(string name) =>
             tempName.TryGetValue(name, out var t) ? t
@@ -48,6 +50,11 @@ public static partial class CSharpEmitter
             sb.Append(options.Indent);
             switch (s)
             {
+                case AssignmentStatement { IsOutput: true } o when held.Contains(o):
+                    var holder = $"{prefix}{temps.Count + deferred.Count}";
+                    sb.Append(options.ScalarType).Append(' ').Append(holder).Append(" = ").Append(Print(o.Value)).Append(';');
+                    deferred.Add((block.OutputTargets[o.Target].Trim(), holder));
+                    break;
                 case AssignmentStatement { IsOutput: true } o:
                     var target = block.OutputTargets[o.Target].Trim();
                     if (options.DeclareOutputs && declared.Add(target)) sb.Append(options.ScalarType).Append(' ');
@@ -71,7 +78,40 @@ public static partial class CSharpEmitter
             }
             sb.Append(options.NewLine);
         }
+        foreach (var (target, holder) in deferred)
+        {
+            sb.Append(options.Indent);
+            if (options.DeclareOutputs && declared.Add(target)) sb.Append(options.ScalarType).Append(' ');
+            sb.Append(target).Append(" = ").Append(holder).Append(';').Append(options.NewLine);
+        }
         return sb.ToString();
+    }
+
+    /// <summary>
+    /// Outputs whose target may be the storage of an input read after them: written in place, they
+    /// would change that input under the statements still to read it (<c>a = a × b</c> bound to one
+    /// variable). Their values are held in temporaries and written after the last statement. The
+    /// test is on the text: the target's leading name is one of the variables (names not after a
+    /// dot, so not members) that such an input's text reads.
+    /// </summary>
+    private static HashSet<AssignmentStatement> HeldOutputs(CodeBlock block)
+    {
+        var held = new HashSet<AssignmentStatement>(ReferenceEqualityComparer.Instance);
+        var namesReadLater = new HashSet<string>(StringComparer.Ordinal);
+        for (var i = block.Statements.Count - 1; i >= 0; i--)
+        {
+            var s = block.Statements[i];
+            if (s is AssignmentStatement { IsOutput: true } o
+                && RootName().Match(block.OutputTargets[o.Target]) is { Success: true } root
+                && namesReadLater.Contains(root.Value.TrimStart('@')))
+                held.Add(o);
+            foreach (var e in s.Expressions)
+            foreach (var v in e.DescendantsAndSelf().OfType<VariableExpr>())
+                if (block.InputText.TryGetValue(v.Name, out var text))
+                    foreach (Match m in RootName().Matches(text))
+                        namesReadLater.Add(m.Value.TrimStart('@'));
+        }
+        return held;
     }
 
     /// <summary>
@@ -108,6 +148,10 @@ public static partial class CSharpEmitter
 
     [GeneratedRegex(@"@?[A-Za-z_][A-Za-z0-9_]*")]
     private static partial Regex IdentifierLike();
+
+    /// <summary>A name that is not a member access: not right after a dot, and starting an identifier.</summary>
+    [GeneratedRegex(@"(?<!\.\s*)(?<![A-Za-z0-9_@])@?[A-Za-z_][A-Za-z0-9_]*")]
+    private static partial Regex RootName();
 
     [GeneratedRegex(@"^(@?[A-Za-z_][A-Za-z0-9_]*(\s*\.\s*@?[A-Za-z_][A-Za-z0-9_]*|\s*\[[^\[\]]*\])*|[0-9]+(\.[0-9]+)?([eE][+-]?[0-9]+)?[dD]?)$")]
     private static partial Regex SimpleExpression();
