@@ -38,6 +38,9 @@ public static class ReportCommand
         }
     }
 
+    private const int PairedRatioPairs = 41;
+    private const int PairedRatioSliceMs = 25;
+
     public static void Write(ReportOptions options, TextWriter log)
     {
         var project = DslProject.Load(options.DslDirectory);
@@ -62,6 +65,9 @@ public static class ReportCommand
         else
         {
             timings = BenchmarkDotNetTimer.MeasureAll(Path.Combine(Path.GetTempPath(), "gmac-bench-artifacts"));
+            log.WriteLine("report: timing generated against hand in pairs");
+            var paired = new PairedRatioTimer(PairedRatioPairs, TimeSpan.FromMilliseconds(PairedRatioSliceMs));
+            timings = timings.Select(t => t with { PairedGeneratedOverHand = paired.GeneratedOverHand(kernels.First(k => k.MacroName == t.Kernel)) }).ToArray();
         }
 
         var rows = kernels.Zip(timings, (k, t) =>
@@ -89,7 +95,8 @@ public static class ReportCommand
         }
 
         var command = "dotnet run -c Release --project bench/GMac.Benchmarks -- report" + (options.Quick ? " --quick" : "");
-        var mode = options.Quick ? "quick: Stopwatch, best of 3 rounds of 20 ms" : "full: BenchmarkDotNet in process, 4 warm-ups, 10 iterations of 200 ms, median";
+        var mode = options.Quick ? "quick: Stopwatch, best of 3 rounds of 20 ms" : "full: BenchmarkDotNet in process, 4 warm-ups, 10 iterations of 200 ms, median; " +
+            $"generated / hand timed in {PairedRatioPairs} back-to-back pairs of {PairedRatioSliceMs} ms slices, median of the pairs' ratios";
         var markdown = MarkdownReport.Render(rows, generation, mode, command, ChartFile,
             accuracy, AccuracyTable.Section(accuracy, accuracyItems, GaApplicationBenchmarks.Seed));
         var png = BarChart.Render(timings);
