@@ -60,7 +60,7 @@ public static class GenerationCommand
     private static void Write(GenerationTimings timings, TextWriter output)
     {
         static string F(double ms) => ms.ToString(ms < 10 ? "0.00" : ms < 100 ? "0.0" : "0", CultureInfo.InvariantCulture);
-        output.WriteLine($"first pass (JIT included): {F(timings.FirstPassMs)} ms; loading dsl: {F(timings.LoadMs)} ms");
+        output.WriteLine($"first pass (JIT included): {F(timings.FirstPassMs)} ms; until the JIT settled: {F(timings.SettlingMs)} ms more; loading dsl: {F(timings.LoadMs)} ms");
         output.WriteLine($"whole library: cold {F(timings.LibraryColdMs)} ms (median of {timings.LibraryColdRuns.Count} cold runs: {string.Join(", ", timings.LibraryColdRuns.Select(F))}), warm {F(timings.LibraryWarmMs)} ms ({timings.Macros.Count} macros)");
         output.WriteLine($"whole library on {Environment.ProcessorCount} cores: cold {F(timings.LibraryParallelColdMs)} ms (median of {timings.LibraryParallelColdRuns.Count} cold runs: {string.Join(", ", timings.LibraryParallelColdRuns.Select(F))})");
         output.WriteLine("| macro | cold ms | warm ms |");

@@ -9,6 +9,9 @@ public sealed record GenerationTimings(
     double LibraryWarmMs,
     IReadOnlyList<double> LibraryParallelColdRuns)
 {
+    /// <summary>The untimed passes after the first, until the JIT compiled no new method.</summary>
+    public double SettlingMs { get; init; }
+
     /// <summary>The median of the cold runs of the whole library.</summary>
     public double LibraryColdMs => GenerationTimer.Median(LibraryColdRuns);
 

@@ -86,9 +86,10 @@ public static class MarkdownReport
             Line("Each macro of `dsl/` with its default bindings (every coefficient read from and written to a named variable). " +
                  "Cold: a fresh `DslProject`, a fresh `MacroCodeGenerator` and a fresh `CachingCasAdapter(new RuleBasedCas(), new SimplificationCache(empty folder))`; " +
                  "the time of `Generate` alone (loading and binding the project is listed once below). Warm: the same generator asked again, median of the repeats. " +
-                 "An untimed pass over the whole library ran first so that JIT compilation is not charged to any macro.");
+                 "Untimed passes over the whole library ran first (below) so that JIT compilation is not charged to any macro.");
             Line();
-            Line($"- untimed first pass over the library (JIT included): {F(generation.FirstPassMs)} ms");
+            Line($"- untimed first pass over the library (JIT included): {F(generation.FirstPassMs)} ms, then untimed passes until one made the JIT compile no new method " +
+                 $"(tiered compilation replaces hot methods in the background; before it settles a cold time depends on how far it got): {F(generation.SettlingMs)} ms");
             Line($"- loading and binding `dsl/`: {F(generation.LoadMs)} ms");
             Line($"- whole library, cold: {F(generation.LibraryColdMs)} ms, the median of {generation.LibraryColdRuns.Count} cold runs ({string.Join(", ", generation.LibraryColdRuns.Select(F))} ms), each after a full collection with a fresh generator and cache; warm: {F(generation.LibraryWarmMs)} ms ({generation.Macros.Count} macros)");
             Line($"- whole library, cold, with the macros shared out over the {Environment.ProcessorCount} cores by one generator (as `gmac generate` shares out files): {F(generation.LibraryParallelColdMs)} ms, the median of {generation.LibraryParallelColdRuns.Count} runs ({string.Join(", ", generation.LibraryParallelColdRuns.Select(F))} ms)");
