@@ -22,13 +22,18 @@ public sealed class Monomial : IComparable<Monomial>
     private Monomial(Factor[] factors)
     {
         _factors = factors;
+        _hash = HashOf(factors);
+    }
+
+    private static int HashOf(ReadOnlySpan<Factor> factors)
+    {
         var hash = new HashCode();
         foreach (var factor in factors)
         {
             hash.Add(factor.Atom.GetHashCode());
             hash.Add(factor.Power);
         }
-        _hash = hash.ToHashCode();
+        return hash.ToHashCode();
     }
 
     public IReadOnlyList<Factor> Factors => _factors;
@@ -74,7 +79,9 @@ public sealed class Monomial : IComparable<Monomial>
         if (b._factors.Length == 0) return a;
         var x = a._factors;
         var y = b._factors;
-        var result = new Factor[x.Length + y.Length];
+        // Merged into a per-thread buffer: most products already exist, and then nothing is allocated.
+        var result = _productFactors is { } buffer && buffer.Length >= x.Length + y.Length ? buffer : new Factor[Math.Max(16, x.Length + y.Length)];
+        _productFactors = result;
         int i = 0, j = 0, k = 0;
         while (i < x.Length && j < y.Length)
         {
@@ -91,8 +98,17 @@ public sealed class Monomial : IComparable<Monomial>
         }
         while (i < x.Length) result[k++] = x[i++];
         while (j < y.Length) result[k++] = y[j++];
-        if (k != result.Length) Array.Resize(ref result, k);
-        return Intern(result);
+        return Table.GetOrAdd(HashOf(result.AsSpan(0, k)), new MergedFactors(result, k));
+    }
+
+    [ThreadStatic] private static Factor[]? _productFactors;
+
+    /// <summary>The first <c>Count</c> factors of a scratch buffer, as the key of the monomial they make.</summary>
+    private readonly struct MergedFactors(Factor[] buffer, int count) : IInternKey<Monomial>
+    {
+        public bool Describes(Monomial candidate) => candidate._factors.AsSpan().SequenceEqual(buffer.AsSpan(0, count));
+
+        public Monomial Create() => new(buffer.AsSpan(0, count).ToArray());
     }
 
     /// <summary>The quotient m / divisor when divisor divides m (same-signed powers no larger in size), else null.</summary>

@@ -49,20 +49,46 @@ internal sealed class WeakInternTable<T>(IEqualityComparer<T> comparer) where T 
                 if (entry.Hash == hash && entry.Handle.Target is T existing && comparer.Equals(existing, candidate))
                     return existing;
             }
-            if (_count == _sweepThreshold)
-            {
-                SweepAndResize();
-                bucket = hash & (_buckets.Length - 1);
-            }
-            else if (_count == _entries.Length)
-            {
-                Resize(_entries.Length * 2);
-                bucket = hash & (_buckets.Length - 1);
-            }
-            _entries[_count] = new Entry { Hash = hash, Next = _buckets[bucket], Handle = GCHandle.Alloc(candidate, GCHandleType.Weak) };
-            _buckets[bucket] = ++_count;
-            return candidate;
+            return Add(hash, bucket, candidate);
         }
+    }
+
+    /// <summary>
+    /// The live object the key describes, or a new one the key creates: a look-up that allocates
+    /// nothing when the object exists, which is most of the time. <paramref name="hash"/> must be
+    /// the comparer's hash of the object the key describes.
+    /// </summary>
+    public T GetOrAdd<TKey>(int hash, TKey key) where TKey : IInternKey<T>
+    {
+        lock (_lock)
+        {
+            var bucket = hash & (_buckets.Length - 1);
+            for (var i = _buckets[bucket]; i != 0; i = _entries[i - 1].Next)
+            {
+                ref var entry = ref _entries[i - 1];
+                if (entry.Hash == hash && entry.Handle.Target is T existing && key.Describes(existing))
+                    return existing;
+            }
+            return Add(hash, bucket, key.Create());
+        }
+    }
+
+    /// <summary>Adopts a candidate known to be new; called under the lock.</summary>
+    private T Add(int hash, int bucket, T candidate)
+    {
+        if (_count == _sweepThreshold)
+        {
+            SweepAndResize();
+            bucket = hash & (_buckets.Length - 1);
+        }
+        else if (_count == _entries.Length)
+        {
+            Resize(_entries.Length * 2);
+            bucket = hash & (_buckets.Length - 1);
+        }
+        _entries[_count] = new Entry { Hash = hash, Next = _buckets[bucket], Handle = GCHandle.Alloc(candidate, GCHandleType.Weak) };
+        _buckets[bucket] = ++_count;
+        return candidate;
     }
 
     private void SweepAndResize()
