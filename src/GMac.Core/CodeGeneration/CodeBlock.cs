@@ -52,9 +52,13 @@ public sealed class CodeBlock
 
     public CodeStatistics Statistics() => CodeStatistics.Of(this);
 
-    /// <summary>Whether both blocks run the same statements (expressions compared structurally, verbatim text part by part).</summary>
+    /// <summary>
+    /// Whether both blocks run the same statements (expressions compared structurally, verbatim text
+    /// part by part). The structure hashes, computed once per block, settle most unequal pairs.
+    /// </summary>
     public bool HasSameStatements(CodeBlock other) =>
-        Statements.Count == other.Statements.Count && Statements.Zip(other.Statements).All(p => p switch
+        ReferenceEquals(this, other) ||
+        Statements.Count == other.Statements.Count && StructureHash == other.StructureHash && Statements.Zip(other.Statements).All(p => p switch
         {
             (VerbatimStatement a, VerbatimStatement b) => a.Parts.SequenceEqual(b.Parts),
             var (a, b) => a.Equals(b),

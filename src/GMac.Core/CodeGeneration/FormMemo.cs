@@ -28,7 +28,7 @@ internal sealed class FormMemo
     public CodeBlock Optimized(CodeBlock built, string form)
     {
         foreach (var (b, optimized) in _blocks)
-            if (ReferenceEquals(b, built) || b.HasSameStatements(built)) return optimized;
+            if (b.HasSameStatements(built)) return optimized;
         var result = GenerationProfile.Time($"optimize {form}", () => Optimizer.Reduce(built));
         _blocks.Add((built, result));
         return result;

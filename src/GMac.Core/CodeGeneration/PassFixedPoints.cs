@@ -17,7 +17,7 @@ internal sealed class PassFixedPoints
     /// <summary>Whether <paramref name="pass"/> is known to return a block equal to <paramref name="block"/>.</summary>
     public bool Contains(IOptimizerPass pass, CodeBlock block) =>
         _known.TryGetValue((pass, block.StructureHash), out var blocks)
-        && blocks.Exists(b => ReferenceEquals(b, block) || b.HasSameStatements(block));
+        && blocks.Exists(b => b.HasSameStatements(block));
 
     public void Add(IOptimizerPass pass, CodeBlock fixedPoint)
     {

@@ -37,20 +37,14 @@ internal sealed class WeakInternTable<T>(IEqualityComparer<T> comparer) where T 
         }
     }
 
-    public T GetOrAdd(T candidate)
+    public T GetOrAdd(T candidate) => GetOrAdd(comparer.GetHashCode(candidate), new Candidate(candidate, comparer));
+
+    /// <summary>An object already made, as the key of itself.</summary>
+    private readonly struct Candidate(T value, IEqualityComparer<T> comparer) : IInternKey<T>
     {
-        var hash = comparer.GetHashCode(candidate);
-        lock (_lock)
-        {
-            var bucket = hash & (_buckets.Length - 1);
-            for (var i = _buckets[bucket]; i != 0; i = _entries[i - 1].Next)
-            {
-                ref var entry = ref _entries[i - 1];
-                if (entry.Hash == hash && entry.Handle.Target is T existing && comparer.Equals(existing, candidate))
-                    return existing;
-            }
-            return Add(hash, bucket, candidate);
-        }
+        public bool Describes(T existing) => comparer.Equals(existing, value);
+
+        public T Create() => value;
     }
 
     /// <summary>
