@@ -8,7 +8,7 @@ public sealed class ConstantExpr : Expr
     public double Value { get; }
     public Rational? Exact { get; }
 
-    public ConstantExpr(double value, Rational? exact = null) : base(StableHash.Combine(1, StableHash.Of(value)))
+    public ConstantExpr(double value, Rational? exact = null) : base(StableHash.Combine(1, StableHash.Of(value)), [])
     {
         Value = value;
         Exact = exact;
@@ -19,7 +19,6 @@ public sealed class ConstantExpr : Expr
     public static readonly ConstantExpr Zero = From(Rational.Zero);
     public static readonly ConstantExpr One = From(Rational.One);
 
-    public override IReadOnlyList<Expr> Children => [];
     public override Expr WithChildren(IReadOnlyList<Expr> children) => this;
     protected override bool SameNode(Expr other) => ((ConstantExpr)other).Value.Equals(Value);
 }

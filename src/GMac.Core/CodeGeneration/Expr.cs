@@ -9,19 +9,38 @@ namespace GMac.Core.CodeGeneration;
 public abstract class Expr : IEquatable<Expr>
 {
     private readonly int _hash;
+    private readonly Expr[] _children;
 
-    protected Expr(int hash) => _hash = hash;
+    /// <summary><paramref name="children"/> becomes the node's own: callers pass a fresh array.</summary>
+    protected Expr(int hash, Expr[] children)
+    {
+        _hash = hash;
+        _children = children;
+    }
 
-    public abstract IReadOnlyList<Expr> Children { get; }
+    public ExprList Children => new(_children);
 
     /// <summary>The same node kind over new children.</summary>
     public abstract Expr WithChildren(IReadOnlyList<Expr> children);
 
     /// <summary>Number of nodes in the tree, a proxy for how much a shared subtree is worth.</summary>
-    public int Size => _size ??= 1 + Children.Sum(c => c.Size);
-    private int? _size;
+    public int Size
+    {
+        get
+        {
+            if (_size == 0)
+            {
+                var size = 1;
+                foreach (var c in _children) size += c.Size;
+                _size = size;
+            }
+            return _size;
+        }
+    }
 
-    public bool IsLeaf => Children.Count == 0;
+    private int _size;
+
+    public bool IsLeaf => _children.Length == 0;
 
     public override int GetHashCode() => _hash;
 
@@ -31,14 +50,14 @@ public abstract class Expr : IEquatable<Expr>
     {
         if (ReferenceEquals(this, other)) return true;
         if (other is null || other._hash != _hash || other.GetType() != GetType()) return false;
-        return SameNode(other) && Children.SequenceEqual(other.Children);
+        return SameNode(other) && _children.AsSpan().SequenceEqual(other._children);
     }
 
     /// <summary>Equality of the node itself, children aside.</summary>
     protected abstract bool SameNode(Expr other);
 
     /// <summary>A deterministic hash of a node kind and its children.</summary>
-    protected static int CombineHashes(int seed, IEnumerable<Expr> children)
+    protected static int CombineHashes(int seed, Expr[] children)
     {
         var h = seed;
         foreach (var c in children) h = StableHash.Combine(h, c._hash);
@@ -49,14 +68,14 @@ public abstract class Expr : IEquatable<Expr>
     public Expr Rewrite(Func<Expr, Expr> rewrite)
     {
         if (IsLeaf) return rewrite(this);
-        var children = Children;
+        var children = _children;
         Expr[]? rebuilt = null;
-        for (var i = 0; i < children.Count; i++)
+        for (var i = 0; i < children.Length; i++)
         {
             var c = children[i].Rewrite(rewrite);
             if (rebuilt is null && !ReferenceEquals(c, children[i]))
             {
-                rebuilt = new Expr[children.Count];
+                rebuilt = new Expr[children.Length];
                 for (var j = 0; j < i; j++) rebuilt[j] = children[j];
             }
             if (rebuilt is not null) rebuilt[i] = c;
@@ -64,18 +83,8 @@ public abstract class Expr : IEquatable<Expr>
         return rewrite(rebuilt is null ? this : WithChildren(rebuilt));
     }
 
-    /// <summary>Every node of the tree, parents before children.</summary>
-    public IEnumerable<Expr> DescendantsAndSelf()
-    {
-        var stack = new Stack<Expr>();
-        stack.Push(this);
-        while (stack.Count > 0)
-        {
-            var e = stack.Pop();
-            yield return e;
-            foreach (var c in e.Children) stack.Push(c);
-        }
-    }
+    /// <summary>Every node of the tree, parents before children (the last child first).</summary>
+    public ExprWalk DescendantsAndSelf() => new(this);
 
     public override string ToString() => ExprPrinter.Print(this, name => name);
 }

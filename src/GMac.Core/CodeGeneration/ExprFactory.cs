@@ -23,9 +23,26 @@ public static class ExprFactory
 
     public static Expr Sum(IEnumerable<Expr> terms)
     {
+        if (terms is Expr[] array) return Sum(array.AsSpan());
+        if (terms is ExprList list) return Sum(list.AsSpan());
         var flat = new List<Expr>();
         ConstantAccumulator constant = default;
         foreach (var t in terms) AddTerm(flat, ref constant, t, negate: false);
+        return FinishSum(flat, constant);
+    }
+
+    public static Expr Sum(ExprList terms) => Sum(terms.AsSpan());
+
+    public static Expr Sum(params ReadOnlySpan<Expr> terms)
+    {
+        var flat = new List<Expr>(terms.Length + 2);
+        ConstantAccumulator constant = default;
+        foreach (var t in terms) AddTerm(flat, ref constant, t, negate: false);
+        return FinishSum(flat, constant);
+    }
+
+    private static Expr FinishSum(List<Expr> flat, ConstantAccumulator constant)
+    {
         CancelOpposites(flat);
         if (!constant.IsZero) flat.Add(constant.ToExpr());
         return flat.Count switch
@@ -36,22 +53,24 @@ public static class ExprFactory
         };
     }
 
-    public static Expr Sum(params Expr[] terms) => Sum((IEnumerable<Expr>)terms);
-
     /// <summary>Removes pairs t, −t from a flattened sum (b − b is 0).</summary>
     private static void CancelOpposites(List<Expr> flat)
     {
         if (flat.Count < 2) return;
         for (var i = 0; i < flat.Count; i++)
         {
-            var opposite = flat[i] is NegateExpr n ? n.Operand : new NegateExpr(flat[i]);
-            var j = flat.FindIndex(i + 1, e => e.Equals(opposite));
-            if (j < 0) continue;
+            var j = i + 1;
+            while (j < flat.Count && !AreOpposite(flat[i], flat[j])) j++;
+            if (j == flat.Count) continue;
             flat.RemoveAt(j);
             flat.RemoveAt(i);
             i--;
         }
     }
+
+    /// <summary>Whether b is −a, tested without building −a.</summary>
+    private static bool AreOpposite(Expr a, Expr b) =>
+        a is NegateExpr n ? n.Operand.Equals(b) : b is NegateExpr m && m.Operand.Equals(a);
 
     public static Expr Difference(Expr a, Expr b) => Sum(a, Negate(b));
 
@@ -76,6 +95,8 @@ public static class ExprFactory
 
     public static Expr Product(IEnumerable<Expr> factors)
     {
+        if (factors is Expr[] array) return Product(array.AsSpan());
+        if (factors is ExprList list) return Product(list.AsSpan());
         var flat = new List<Expr>();
         var constant = ConstantAccumulator.One;
         var negative = false;
@@ -83,6 +104,25 @@ public static class ExprFactory
         {
             if (!AddFactor(flat, ref constant, ref negative, f)) return ConstantExpr.Zero;
         }
+        return FinishProduct(flat, constant, negative);
+    }
+
+    public static Expr Product(ExprList factors) => Product(factors.AsSpan());
+
+    public static Expr Product(params ReadOnlySpan<Expr> factors)
+    {
+        var flat = new List<Expr>(factors.Length + 1);
+        var constant = ConstantAccumulator.One;
+        var negative = false;
+        foreach (var f in factors)
+        {
+            if (!AddFactor(flat, ref constant, ref negative, f)) return ConstantExpr.Zero;
+        }
+        return FinishProduct(flat, constant, negative);
+    }
+
+    private static Expr FinishProduct(List<Expr> flat, ConstantAccumulator constant, bool negative)
+    {
         if (constant.IsNegative)
         {
             constant.Negate();
@@ -106,8 +146,6 @@ public static class ExprFactory
         };
         return negative ? Negate(result) : result;
     }
-
-    public static Expr Product(params Expr[] factors) => Product((IEnumerable<Expr>)factors);
 
     /// <returns>false when a factor is zero.</returns>
     private static bool AddFactor(List<Expr> flat, ref ConstantAccumulator constant, ref bool negative, Expr f)

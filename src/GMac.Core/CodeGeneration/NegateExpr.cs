@@ -5,9 +5,12 @@ public sealed class NegateExpr : Expr
 {
     public Expr Operand { get; }
 
-    public NegateExpr(Expr operand) : base(CombineHashes(6, [operand])) => Operand = operand;
+    public NegateExpr(Expr operand) : this([operand])
+    {
+    }
 
-    public override IReadOnlyList<Expr> Children => [Operand];
+    private NegateExpr(Expr[] children) : base(CombineHashes(6, children), children) => Operand = children[0];
+
     public override Expr WithChildren(IReadOnlyList<Expr> children) => new NegateExpr(children[0]);
     protected override bool SameNode(Expr other) => true;
 }

@@ -6,13 +6,16 @@ public sealed class QuotientExpr : Expr
     public Expr Numerator { get; }
     public Expr Denominator { get; }
 
-    public QuotientExpr(Expr numerator, Expr denominator) : base(CombineHashes(5, [numerator, denominator]))
+    public QuotientExpr(Expr numerator, Expr denominator) : this([numerator, denominator])
     {
-        Numerator = numerator;
-        Denominator = denominator;
     }
 
-    public override IReadOnlyList<Expr> Children => [Numerator, Denominator];
+    private QuotientExpr(Expr[] children) : base(CombineHashes(5, children), children)
+    {
+        Numerator = children[0];
+        Denominator = children[1];
+    }
+
     public override Expr WithChildren(IReadOnlyList<Expr> children) => new QuotientExpr(children[0], children[1]);
     protected override bool SameNode(Expr other) => true;
 }

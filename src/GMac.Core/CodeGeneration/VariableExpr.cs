@@ -5,9 +5,8 @@ public sealed class VariableExpr : Expr
 {
     public string Name { get; }
 
-    public VariableExpr(string name) : base(StableHash.Combine(2, StableHash.Of(name))) => Name = name;
+    public VariableExpr(string name) : base(StableHash.Combine(2, StableHash.Of(name)), []) => Name = name;
 
-    public override IReadOnlyList<Expr> Children => [];
     public override Expr WithChildren(IReadOnlyList<Expr> children) => this;
     protected override bool SameNode(Expr other) => ((VariableExpr)other).Name == Name;
 }

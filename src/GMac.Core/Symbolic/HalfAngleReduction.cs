@@ -15,7 +15,7 @@ public static class HalfAngleReduction
         // only the terms' own factors are reduced; deeper ones leave every term as it is
         if (!value.FactorAtoms.Any(IsHalfAngleTrig)) return value;
         var sum = new ScalarSumBuilder();
-        foreach (var term in value.Terms) sum.Add(Reduce(term));
+        foreach (var term in value.TermArray) sum.Add(Reduce(term));
         return sum.ToScalar();
     }
 
@@ -29,7 +29,7 @@ public static class HalfAngleReduction
         // powers of sin(u) and cos(u) per half-angle argument u; everything else stays
         var powers = new Dictionary<Scalar, (int Sin, int Cos)>();
         var rest = Scalar.Constant(term.Coefficient);
-        foreach (var f in term.Monomial.Factors)
+        foreach (var f in term.Monomial.FactorArray)
         {
             if (f.Power > 0 && IsHalfAngleTrig(f.Atom))
             {

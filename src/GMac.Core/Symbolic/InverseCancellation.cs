@@ -35,10 +35,10 @@ public static class InverseCancellation
     public static Scalar ReplaceAtoms(Scalar e, IReadOnlyDictionary<Atom, Scalar> replacements)
     {
         var sum = new ScalarSumBuilder();
-        foreach (var term in e.Terms)
+        foreach (var term in e.TermArray)
         {
             var product = Scalar.Constant(term.Coefficient);
-            foreach (var f in term.Monomial.Factors)
+            foreach (var f in term.Monomial.FactorArray)
                 product *= Scalar.IntegerPower(replacements.TryGetValue(f.Atom, out var r) ? r : f.Atom.AsScalar(), f.Power);
             sum.Add(product);
         }
@@ -85,7 +85,7 @@ public static class InverseCancellation
     {
         var cofactor = new List<Term>();
         var rest = new List<Term>();
-        foreach (var t in e.Terms)
+        foreach (var t in e.TermArray)
         {
             var power = t.Monomial.Factors.FirstOrDefault(f => ReferenceEquals(f.Atom, atom)).Power;
             if (power > 0) cofactor.Add(new Term(t.Coefficient, WithPower(t.Monomial, atom, power - 1)));

@@ -206,6 +206,14 @@ public sealed class RuleBasedCas : ICasAdapter
             return needed || exponentials >= 2;
         }
 
+        /// <summary>Whether a factor is a positive power of sin(argument).</summary>
+        private static bool HasSineOf(Factor[] factors, Scalar argument)
+        {
+            foreach (var f in factors)
+                if (f.Atom.Kind == AtomKind.Sin && f.Power > 0 && ReferenceEquals(f.Atom.ArgumentArray[0], argument)) return true;
+            return false;
+        }
+
         private static (bool Needed, int Exponentials) TermRuleNeeds(Factor[] factors)
         {
             var needed = false;
@@ -225,7 +233,7 @@ public sealed class RuleBasedCas : ICasAdapter
                         needed = true;
                         break;
                     case AtomKind.Cos when factor.Power < 0:
-                        needed |= Array.Exists(factors, f => f.Atom.Kind == AtomKind.Sin && f.Power > 0 && ReferenceEquals(f.Atom.ArgumentArray[0], factor.Atom.ArgumentArray[0]));
+                        needed |= HasSineOf(factors, factor.Atom.ArgumentArray[0]);
                         break;
                 }
             }

@@ -1,3 +1,4 @@
+using System.Buffers;
 using GMac.Core.Numerics;
 
 namespace GMac.Core.Symbolic;
@@ -115,47 +116,57 @@ public sealed partial class Scalar
 
     /// <summary>
     /// Rebuilds a scalar bottom-up: <paramref name="rewrite"/> may replace an atom (null keeps it,
-    /// after its arguments have been rebuilt and the function folded again).
+    /// after its arguments have been rebuilt and the function folded again). Atoms with arguments
+    /// are remembered in <paramref name="memo"/>; for the others (variables, constants) the rewrite
+    /// is asked again each time, so it must be cheap for them.
     /// </summary>
     internal static Scalar MapAtoms(Scalar s, Func<Atom, Scalar?> rewrite, Dictionary<Atom, Scalar> memo)
     {
         if (s._terms.Length == 0) return s;
-        var changed = false;
-        var images = new Scalar[s._terms.Length][];
-        for (var i = 0; i < s._terms.Length; i++)
+        var width = 0;
+        foreach (var term in s._terms) width += term.Monomial.FactorArray.Length;
+        // the image of every factor, row after row; rented, since most calls change nothing
+        var images = ArrayPool<Scalar>.Shared.Rent(width);
+        try
         {
-            var factors = s._terms[i].Monomial.FactorArray;
-            var row = new Scalar[factors.Length];
-            for (var j = 0; j < factors.Length; j++)
+            var changed = false;
+            var k = 0;
+            foreach (var term in s._terms)
             {
-                row[j] = MapAtom(factors[j].Atom, rewrite, memo);
-                changed |= !ReferenceEquals(row[j], factors[j].Atom.AsScalar());
+                foreach (var factor in term.Monomial.FactorArray)
+                {
+                    var image = MapAtom(factor.Atom, rewrite, memo);
+                    changed |= !ReferenceEquals(image, factor.Atom.AsScalar());
+                    images[k++] = image;
+                }
             }
-            images[i] = row;
+            if (!changed) return s;
+            var sum = new ScalarSumBuilder();
+            k = 0;
+            foreach (var term in s._terms)
+            {
+                var product = Constant(term.Coefficient);
+                foreach (var factor in term.Monomial.FactorArray) product *= IntegerPower(images[k++], factor.Power);
+                sum.Add(product);
+            }
+            return sum.ToScalar();
         }
-        if (!changed) return s;
-        var sum = new ScalarSumBuilder();
-        for (var i = 0; i < s._terms.Length; i++)
+        finally
         {
-            var term = s._terms[i];
-            var factors = term.Monomial.FactorArray;
-            var product = Constant(term.Coefficient);
-            for (var j = 0; j < factors.Length; j++) product *= IntegerPower(images[i][j], factors[j].Power);
-            sum.Add(product);
+            ArrayPool<Scalar>.Shared.Return(images, clearArray: true);
         }
-        return sum.ToScalar();
     }
 
     private static Scalar MapAtom(Atom atom, Func<Atom, Scalar?> rewrite, Dictionary<Atom, Scalar> memo)
     {
+        var arguments = atom.ArgumentArray;
+        if (arguments.Length == 0) return rewrite(atom) ?? atom.AsScalar();
         if (memo.TryGetValue(atom, out var known)) return known;
         Scalar result;
         var direct = rewrite(atom);
         if (direct is not null) result = direct;
-        else if (atom.ArgumentArray.Length == 0) result = atom.AsScalar();
         else
         {
-            var arguments = atom.ArgumentArray;
             var mapped = new Scalar[arguments.Length];
             var changed = false;
             for (var i = 0; i < arguments.Length; i++)
@@ -201,23 +212,15 @@ public sealed partial class Scalar
 
     private static Scalar AtomDerivative(Atom atom, string variable, Dictionary<Atom, Scalar> memo)
     {
-        if (memo.TryGetValue(atom, out var known)) return known;
+        // variables and constants are answered directly; only functions are worth remembering
+        if (atom.Kind == AtomKind.Variable) return atom.Name == variable ? One : Zero;
         var a = atom.ArgumentArray;
+        if (!ReadsVariable(a, variable)) return Zero;
+        if (memo.TryGetValue(atom, out var known)) return known;
         var self = atom.AsScalar();
         Scalar result;
-        if (atom.Kind != AtomKind.Variable && !Array.Exists(a, argument => argument.Variables.Contains(variable)))
-        {
-            memo[atom] = Zero;
-            return Zero;
-        }
         switch (atom.Kind)
         {
-            case AtomKind.Variable:
-                result = atom.Name == variable ? One : Zero;
-                break;
-            case AtomKind.Pi:
-                result = Zero;
-                break;
             case AtomKind.Atan2:
             {
                 // d atan2(y, x) = (x dy - y dx) / (x² + y²)
@@ -254,5 +257,12 @@ public sealed partial class Scalar
         }
         memo[atom] = result;
         return result;
+    }
+
+    private static bool ReadsVariable(Scalar[] arguments, string variable)
+    {
+        foreach (var argument in arguments)
+            if (argument.Variables.Contains(variable)) return true;
+        return false;
     }
 }

@@ -34,13 +34,18 @@ public sealed partial class Scalar : IComparable<Scalar>
     private Scalar(Term[] terms)
     {
         _terms = terms;
+        _hash = HashOf(terms);
+    }
+
+    private static int HashOf(ReadOnlySpan<Term> terms)
+    {
         var hash = new HashCode();
         foreach (var term in terms)
         {
             hash.Add(term.Coefficient);
             hash.Add(term.Monomial.GetHashCode());
         }
-        _hash = hash.ToHashCode();
+        return hash.ToHashCode();
     }
 
     /// <summary>The terms in canonical order (the constant term, if any, first).</summary>
@@ -70,7 +75,7 @@ public sealed partial class Scalar : IComparable<Scalar>
     }
 
     public static Scalar Constant(Rational value) =>
-        value.IsZero ? Zero : value.IsOne ? One : Intern([new Term(value, Monomial.One)]);
+        value.IsZero ? Zero : value.IsOne ? One : InternTerm(new Term(value, Monomial.One));
 
     public static Scalar Variable(string name)
     {
@@ -92,13 +97,13 @@ public sealed partial class Scalar : IComparable<Scalar>
     }
 
     public static Scalar FromTerm(Rational coefficient, Monomial monomial) =>
-        coefficient.IsZero ? Zero : Intern([new Term(coefficient, monomial)]);
+        coefficient.IsZero ? Zero : InternTerm(new Term(coefficient, monomial));
 
     private static Scalar FromUnsorted(List<Term> list)
     {
         if (list.Count == 0) return Zero;
         list.Sort(static (x, y) => Monomial.Compare(x.Monomial, y.Monomial));
-        var result = new Term[list.Count];
+        var result = Scratch(list.Count);
         var k = 0;
         var current = list[0];
         for (var i = 1; i < list.Count; i++)
@@ -113,14 +118,55 @@ public sealed partial class Scalar : IComparable<Scalar>
             current = next;
         }
         if (!current.Coefficient.IsZero) result[k++] = current;
-        if (k != result.Length) Array.Resize(ref result, k);
-        return Intern(result);
+        return InternScratch(result, k);
     }
 
     private static Scalar Intern(Term[] terms)
     {
         var candidate = new Scalar(terms);
         return Table.GetOrAdd(candidate);
+    }
+
+    // Sums, differences and scaled copies are built in a per-thread buffer and looked up from
+    // there: most of them already exist, and then neither the terms nor the scalar are allocated.
+    [ThreadStatic] private static Term[]? _scratch;
+
+    private static Term[] Scratch(int length)
+    {
+        var buffer = _scratch;
+        if (buffer is null || buffer.Length < length) _scratch = buffer = new Term[Math.Max(length, 2 * (buffer?.Length ?? 32))];
+        return buffer;
+    }
+
+    /// <summary>The scalar of the first <paramref name="count"/> terms of <see cref="_scratch"/>, which is then cleared.</summary>
+    private static Scalar InternScratch(Term[] buffer, int count)
+    {
+        var scalar = count == 0 ? Zero : Table.GetOrAdd(HashOf(buffer.AsSpan(0, count)), new ScratchTerms(buffer, count));
+        Array.Clear(buffer, 0, count); // hold no monomial alive past this call
+        return scalar;
+    }
+
+    /// <summary>The scalar of one non-zero term.</summary>
+    private static Scalar InternTerm(Term term)
+    {
+        var buffer = Scratch(1);
+        buffer[0] = term;
+        return InternScratch(buffer, 1);
+    }
+
+    private readonly struct ScratchTerms(Term[] buffer, int count) : IInternKey<Scalar>
+    {
+        public bool Describes(Scalar candidate)
+        {
+            var terms = candidate._terms;
+            if (terms.Length != count) return false;
+            for (var i = 0; i < count; i++)
+                if (!ReferenceEquals(terms[i].Monomial, buffer[i].Monomial) || terms[i].Coefficient != buffer[i].Coefficient)
+                    return false;
+            return true;
+        }
+
+        public Scalar Create() => new(buffer.AsSpan(0, count).ToArray());
     }
 
     /// <summary>Entries in the scalar intern table (live scalars plus dead ones not yet swept).</summary>
@@ -172,7 +218,7 @@ public sealed partial class Scalar : IComparable<Scalar>
         if (a.TryGetConstant(out var ca)) return Scale(b, ca);
         if (b.TryGetConstant(out var cb)) return Scale(a, cb);
         if (x.Length == 1 && y.Length == 1)
-            return Intern([new Term(x[0].Coefficient * y[0].Coefficient, x[0].Monomial * y[0].Monomial)]);
+            return InternTerm(new Term(x[0].Coefficient * y[0].Coefficient, x[0].Monomial * y[0].Monomial));
         // Accumulate by monomial (reference keys, cached hashes), then sort once. The table and
         // list are reused per thread: products are the engine's most frequent operation, and
         // fresh ones were a large share of everything it allocated.
@@ -221,9 +267,9 @@ public sealed partial class Scalar : IComparable<Scalar>
         if (factor.IsZero || a._terms.Length == 0) return Zero;
         if (factor.IsOne) return a;
         var x = a._terms;
-        var result = new Term[x.Length];
+        var result = Scratch(x.Length);
         for (var i = 0; i < x.Length; i++) result[i] = new Term(x[i].Coefficient * factor, x[i].Monomial);
-        return Intern(result);
+        return InternScratch(result, x.Length);
     }
 
     private static Scalar Merge(Scalar a, Scalar b, bool negateRight)
@@ -232,7 +278,7 @@ public sealed partial class Scalar : IComparable<Scalar>
         var y = b._terms;
         if (y.Length == 0) return a;
         if (x.Length == 0) return negateRight ? -b : b;
-        var result = new Term[x.Length + y.Length];
+        var result = Scratch(x.Length + y.Length);
         int i = 0, j = 0, k = 0;
         while (i < x.Length && j < y.Length)
         {
@@ -253,8 +299,7 @@ public sealed partial class Scalar : IComparable<Scalar>
         }
         while (i < x.Length) result[k++] = x[i++];
         for (; j < y.Length; j++) result[k++] = negateRight ? new Term(-y[j].Coefficient, y[j].Monomial) : y[j];
-        if (k != result.Length) Array.Resize(ref result, k);
-        return Intern(result);
+        return InternScratch(result, k);
     }
 
     /// <summary>1/a: exact for constants and single terms, an inverse atom for sums.</summary>

@@ -48,11 +48,11 @@ internal sealed class PolynomialValues
     {
         if (!lifted.Variables.Any(v => Polynomial(v) is not null)) return lifted;
         var sum = Scalar.Zero;
-        foreach (var term in lifted.Terms)
+        foreach (var term in lifted.TermArray)
         {
             long size = 1;
             var product = Scalar.Constant(term.Coefficient);
-            foreach (var f in term.Monomial.Factors)
+            foreach (var f in term.Monomial.FactorArray)
             {
                 var value = (f.Atom.Kind == AtomKind.Variable ? Polynomial(f.Atom.Name) : null) ?? f.Atom.AsScalar();
                 for (var k = 0; k < f.Power; k++) size *= value.Terms.Count;

@@ -68,7 +68,7 @@ internal static class TranslationGroups
     private static Dictionary<Monomial, Rational> TermTable(Scalar s)
     {
         var table = new Dictionary<Monomial, Rational>(s.Terms.Count);
-        foreach (var t in s.Terms) table[t.Monomial] = t.Coefficient;
+        foreach (var t in s.TermArray) table[t.Monomial] = t.Coefficient;
         return table;
     }
 
@@ -76,7 +76,7 @@ internal static class TranslationGroups
     private static int TermCountOfSum(Dictionary<Monomial, Rational> sum, Scalar addend)
     {
         var count = sum.Count + addend.Terms.Count;
-        foreach (var t in addend.Terms)
+        foreach (var t in addend.TermArray)
             if (sum.TryGetValue(t.Monomial, out var c))
                 count -= c == -t.Coefficient ? 2 : 1;
         return count;

@@ -22,7 +22,7 @@ public static class AngleZeroSplit
             var with = new List<Term>();
             var without = new List<Term>();
             var linear = true;
-            foreach (var t in e.Terms)
+            foreach (var t in e.TermArray)
             {
                 var power = t.Monomial.Factors.FirstOrDefault(f => ReferenceEquals(f.Atom, atom)).Power;
                 if (power == 0) without.Add(t);

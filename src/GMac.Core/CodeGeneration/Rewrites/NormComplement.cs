@@ -91,15 +91,15 @@ internal static class NormComplement
     /// <summary>Sums read whole by |u| or atan2, and roots √P of sums, at any depth.</summary>
     private static void Collect(Scalar s, Dictionary<Scalar, List<Atom>> reads, List<Atom> roots, HashSet<Atom> seen)
     {
-        foreach (var term in s.Terms)
-        foreach (var factor in term.Monomial.Factors)
+        foreach (var term in s.TermArray)
+        foreach (var factor in term.Monomial.FactorArray)
         {
             var atom = factor.Atom;
             if (!seen.Add(atom)) continue;
-            foreach (var argument in atom.Arguments) Collect(argument, reads, roots, seen);
+            foreach (var argument in atom.ArgumentArray) Collect(argument, reads, roots, seen);
             if (atom.Kind == AtomKind.Sqrt && atom.Arguments[0].Terms.Count >= 2) roots.Add(atom);
             if (atom.Kind is not (AtomKind.Abs or AtomKind.Atan2)) continue;
-            foreach (var argument in atom.Arguments)
+            foreach (var argument in atom.ArgumentArray)
             {
                 if (argument.Terms.Count < 2) continue;
                 if (!reads.TryGetValue(argument, out var readers)) reads[argument] = readers = [];

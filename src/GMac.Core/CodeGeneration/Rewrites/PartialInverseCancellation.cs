@@ -43,7 +43,7 @@ public static class PartialInverseCancellation
     {
         var cofactor = new List<Term>();
         var rest = new List<Term>();
-        foreach (var t in e.Terms)
+        foreach (var t in e.TermArray)
         {
             var power = t.Monomial.Factors.FirstOrDefault(f => ReferenceEquals(f.Atom, atom)).Power;
             if (power > 0)

@@ -45,7 +45,7 @@ internal static class PolynomialRemainder
 
     private static int Power(Monomial m, Atom atom)
     {
-        foreach (var f in m.Factors)
+        foreach (var f in m.FactorArray)
             if (ReferenceEquals(f.Atom, atom)) return f.Power;
         return 0;
     }
