@@ -87,15 +87,12 @@ public static class InverseCancellation
         var rest = new List<Term>();
         foreach (var t in e.TermArray)
         {
-            var power = t.Monomial.Factors.FirstOrDefault(f => ReferenceEquals(f.Atom, atom)).Power;
-            if (power > 0) cofactor.Add(new Term(t.Coefficient, WithPower(t.Monomial, atom, power - 1)));
+            var power = t.Monomial.PowerOf(atom);
+            if (power > 0) cofactor.Add(new Term(t.Coefficient, Monomial.WithPower(t.Monomial, atom, power - 1)));
             else rest.Add(t);
         }
-        return (Scalar.FromTerms(cofactor), Scalar.FromTerms(rest));
+        return (Scalar.FromOwnedTerms(cofactor), Scalar.FromOwnedTerms(rest));
     }
-
-    private static Monomial WithPower(Monomial m, Atom atom, int power) =>
-        Monomial.Create(m.Factors.Where(f => !ReferenceEquals(f.Atom, atom)).Concat(power != 0 ? [new Factor(atom, power)] : []));
 
     /// <summary>Exact division b / s; false when a remainder is left.</summary>
     public static bool TryDivide(Scalar b, Scalar s, out Scalar quotient)

@@ -80,8 +80,7 @@ public sealed class Monomial : IComparable<Monomial>
         var x = a._factors;
         var y = b._factors;
         // Merged into a per-thread buffer: most products already exist, and then nothing is allocated.
-        var result = _productFactors is { } buffer && buffer.Length >= x.Length + y.Length ? buffer : new Factor[Math.Max(16, x.Length + y.Length)];
-        _productFactors = result;
+        var result = Scratch(x.Length + y.Length);
         int i = 0, j = 0, k = 0;
         while (i < x.Length && j < y.Length)
         {
@@ -103,6 +102,44 @@ public sealed class Monomial : IComparable<Monomial>
 
     [ThreadStatic] private static Factor[]? _productFactors;
 
+    private static Factor[] Scratch(int length)
+    {
+        var buffer = _productFactors;
+        if (buffer is null || buffer.Length < length) _productFactors = buffer = new Factor[Math.Max(16, length)];
+        return buffer;
+    }
+
+    /// <summary>The power of <paramref name="atom"/> in the monomial, 0 when it is absent.</summary>
+    internal int PowerOf(Atom atom)
+    {
+        foreach (var factor in _factors)
+            if (ReferenceEquals(factor.Atom, atom)) return factor.Power;
+        return 0;
+    }
+
+    /// <summary>m with the power of <paramref name="atom"/> set to <paramref name="power"/> (0 removes the atom).</summary>
+    internal static Monomial WithPower(Monomial m, Atom atom, int power)
+    {
+        if (atom.Kind == AtomKind.Inverse && power < 0)
+            throw new ArgumentException("An inverse atom cannot carry a negative power; use the sum itself.", nameof(power));
+        var x = m._factors;
+        var result = Scratch(x.Length + 1);
+        var k = 0;
+        var placed = power == 0;
+        foreach (var factor in x)
+        {
+            if (ReferenceEquals(factor.Atom, atom)) continue;
+            if (!placed && Atom.Compare(atom, factor.Atom) < 0)
+            {
+                result[k++] = new Factor(atom, power);
+                placed = true;
+            }
+            result[k++] = factor;
+        }
+        if (!placed) result[k++] = new Factor(atom, power);
+        return Table.GetOrAdd(HashOf(result.AsSpan(0, k)), new MergedFactors(result, k));
+    }
+
     /// <summary>The first <c>Count</c> factors of a scratch buffer, as the key of the monomial they make.</summary>
     private readonly struct MergedFactors(Factor[] buffer, int count) : IInternKey<Monomial>
     {
@@ -116,7 +153,8 @@ public sealed class Monomial : IComparable<Monomial>
     {
         var x = m._factors;
         var y = divisor._factors;
-        var result = new List<Factor>(x.Length);
+        var result = Scratch(x.Length);
+        var k = 0;
         var j = 0;
         foreach (var factor in x)
         {
@@ -124,16 +162,16 @@ public sealed class Monomial : IComparable<Monomial>
             {
                 var d = y[j].Power;
                 if (Math.Sign(d) != Math.Sign(factor.Power) || Math.Abs(d) > Math.Abs(factor.Power)) return null;
-                if (factor.Power != d) result.Add(factor with { Power = factor.Power - d });
+                if (factor.Power != d) result[k++] = factor with { Power = factor.Power - d };
                 j++;
             }
             else
             {
                 if (j < y.Length && Atom.Compare(y[j].Atom, factor.Atom) < 0) return null;
-                result.Add(factor);
+                result[k++] = factor;
             }
         }
-        return j == y.Length ? Intern([.. result]) : null;
+        return j == y.Length ? Table.GetOrAdd(HashOf(result.AsSpan(0, k)), new MergedFactors(result, k)) : null;
     }
 
     public override int GetHashCode() => _hash;

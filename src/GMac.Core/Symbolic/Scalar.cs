@@ -96,6 +96,9 @@ public sealed partial class Scalar : IComparable<Scalar>
         return FromUnsorted(list);
     }
 
+    /// <summary>As <see cref="FromTerms"/>, for a list the caller gives away: it is sorted in place, not copied.</summary>
+    internal static Scalar FromOwnedTerms(List<Term> terms) => FromUnsorted(terms);
+
     public static Scalar FromTerm(Rational coefficient, Monomial monomial) =>
         coefficient.IsZero ? Zero : InternTerm(new Term(coefficient, monomial));
 

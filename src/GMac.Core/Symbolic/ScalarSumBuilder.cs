@@ -49,7 +49,7 @@ public sealed class ScalarSumBuilder
         var list = new List<Term>(_terms.Count);
         foreach (var (monomial, coefficient) in _terms)
             if (!coefficient.IsZero) list.Add(new Term(coefficient, monomial));
-        return Scalar.FromTerms(list);
+        return Scalar.FromOwnedTerms(list);
     }
 
     public void Clear() => _terms.Clear();

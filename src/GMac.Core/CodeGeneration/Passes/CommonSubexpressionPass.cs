@@ -114,9 +114,11 @@ public sealed class CommonSubexpressionPass(Func<int, string> temporaryName) : I
     {
         if (e.IsLeaf) return e;
         if (_keys.TryGetValue(e, out var key)) return key;
-        var children = e.Children.Select(Key).ToList();
+        var source = e.Children;
+        var children = new Expr[source.Count];
+        for (var i = 0; i < children.Length; i++) children[i] = Key(source[i]);
         if (e is SumExpr or ProductExpr)
-            children.Sort(ExprOrder.Compare);
+            Array.Sort(children, ExprOrder.Compare);
         key = e.WithChildren(children);
         // Equal keys are made one object: their children are already shared, so this look-up compares
         // one level, and every later comparison of keys (counting, matching) stops at reference equality
@@ -147,7 +149,10 @@ public sealed class CommonSubexpressionPass(Func<int, string> temporaryName) : I
         }
         var key = Key(e);
         if (e is not SumExpr) return (key, false);
-        var opposite = Key(ExprFactory.Sum(e.Children.Select(ExprFactory.Negate)));
+        var terms = e.Children;
+        var opposites = new Expr[terms.Count];
+        for (var i = 0; i < opposites.Length; i++) opposites[i] = ExprFactory.Negate(terms[i]);
+        var opposite = Key(ExprFactory.Sum(opposites));
         var oppositeFirst = ExprOrder.Compare(opposite, key) < 0;
         return oppositeFirst ? (opposite, true) : (key, false);
     }

@@ -24,9 +24,9 @@ public static class AngleZeroSplit
             var linear = true;
             foreach (var t in e.TermArray)
             {
-                var power = t.Monomial.Factors.FirstOrDefault(f => ReferenceEquals(f.Atom, atom)).Power;
+                var power = t.Monomial.PowerOf(atom);
                 if (power == 0) without.Add(t);
-                else if (power == 1) with.Add(new Term(t.Coefficient, Monomial.Create(t.Monomial.Factors.Where(f => !ReferenceEquals(f.Atom, atom)))));
+                else if (power == 1) with.Add(new Term(t.Coefficient, Monomial.WithPower(t.Monomial, atom, 0)));
                 else { linear = false; break; }
             }
             if (!linear || with.Count == 0) continue;

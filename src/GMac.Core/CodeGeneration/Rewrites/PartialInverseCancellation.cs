@@ -45,12 +45,10 @@ public static class PartialInverseCancellation
         var rest = new List<Term>();
         foreach (var t in e.TermArray)
         {
-            var power = t.Monomial.Factors.FirstOrDefault(f => ReferenceEquals(f.Atom, atom)).Power;
-            if (power > 0)
-                cofactor.Add(new Term(t.Coefficient, Monomial.Create(t.Monomial.Factors.Where(f => !ReferenceEquals(f.Atom, atom))
-                    .Concat(power > 1 ? [new Factor(atom, power - 1)] : []))));
+            var power = t.Monomial.PowerOf(atom);
+            if (power > 0) cofactor.Add(new Term(t.Coefficient, Monomial.WithPower(t.Monomial, atom, power - 1)));
             else rest.Add(t);
         }
-        return (Scalar.FromTerms(cofactor), Scalar.FromTerms(rest));
+        return (Scalar.FromOwnedTerms(cofactor), Scalar.FromOwnedTerms(rest));
     }
 }
