@@ -13,7 +13,7 @@ internal sealed class WeakInternTable<T>(IEqualityComparer<T> comparer) where T 
 {
     private const int MinimumSweepThreshold = 1 << 12;
 
-    private readonly object _lock = new();
+    private readonly Lock _lock = new();
     // index + 1 of the first entry in the chain, 0 for none; the length is always a power of two,
     // so a bucket is the hash's low bits (the same as the remainder, without a division per look-up)
     private int[] _buckets = new int[1 << 10];
