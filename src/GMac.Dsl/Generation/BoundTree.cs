@@ -1,3 +1,4 @@
+using System.Collections.Concurrent;
 using System.Collections;
 using System.Reflection;
 using GMac.Dsl.Semantics;
@@ -14,9 +15,8 @@ internal static class BoundTree
         if (node is null || depth > 256) return false;
         if (kind.IsInstanceOfType(node)) return true;
         if (node is not (BoundStatement or BoundExpression or CoefficientValue)) return false;
-        foreach (var property in node.GetType().GetProperties(BindingFlags.Public | BindingFlags.Instance))
+        foreach (var property in Properties.GetOrAdd(node.GetType(), ReadableProperties))
         {
-            if (property.GetIndexParameters().Length > 0) continue;
             var value = property.GetValue(node);
             if (value is BoundStatement or BoundExpression or CoefficientValue)
             {
@@ -30,4 +30,10 @@ internal static class BoundTree
         }
         return false;
     }
+
+    // Reflection over a node's type is the same for every node of that type: asked once.
+    private static readonly ConcurrentDictionary<Type, PropertyInfo[]> Properties = new();
+
+    private static PropertyInfo[] ReadableProperties(Type type) =>
+        type.GetProperties(BindingFlags.Public | BindingFlags.Instance).Where(p => p.GetIndexParameters().Length == 0).ToArray();
 }

@@ -1,3 +1,4 @@
+using System.Collections.Concurrent;
 using System.Text.RegularExpressions;
 using GMac.Core.Algebra;
 using GMac.Core.CodeGeneration;
@@ -210,14 +211,22 @@ public sealed partial class MacroCodeGenerator
         }, StringComparer.Ordinal);
     }
 
-    private static bool UsesDifferentiation(MacroSymbol macro) => Reaches(macro, s => BoundTree.Contains<BoundDifferentiation>(s));
+    /// <summary>
+    /// Whether the macro or a macro it calls (at any depth) differentiates. Remembered per macro, so
+    /// each macro's statements are searched once per generator, not once per caller that reaches it.
+    /// </summary>
+    private bool UsesDifferentiation(MacroSymbol macro, HashSet<MacroSymbol>? visiting = null)
+    {
+        if (_differentiates.TryGetValue(macro, out var known)) return known;
+        visiting ??= [];
+        if (!visiting.Add(macro)) return false; // a call cycle, already reported by the binder
+        var result = macro.Statements.Any(s => BoundTree.Contains<BoundDifferentiation>(s)) || macro.Callees.Any(c => UsesDifferentiation(c, visiting));
+        _differentiates[macro] = result;
+        return result;
+    }
+
+    private readonly ConcurrentDictionary<MacroSymbol, bool> _differentiates = new();
 
     private static bool UsesJoin(MacroSymbol macro) => macro.Statements.Any(s => s is BoundJoinStatement);
 
-    private static bool Reaches(MacroSymbol macro, Func<BoundStatement, bool> test, HashSet<MacroSymbol>? seen = null)
-    {
-        seen ??= [];
-        if (!seen.Add(macro)) return false;
-        return macro.Statements.Any(test) || macro.Callees.Any(c => Reaches(c, test, seen));
-    }
 }
