@@ -97,7 +97,7 @@ public sealed class Monomial : IComparable<Monomial>
         }
         while (i < x.Length) result[k++] = x[i++];
         while (j < y.Length) result[k++] = y[j++];
-        return Table.GetOrAdd(HashOf(result.AsSpan(0, k)), new MergedFactors(result, k));
+        return InternScratch(result, k);
     }
 
     [ThreadStatic] private static Factor[]? _productFactors;
@@ -137,11 +137,14 @@ public sealed class Monomial : IComparable<Monomial>
             result[k++] = factor;
         }
         if (!placed) result[k++] = new Factor(atom, power);
-        return Table.GetOrAdd(HashOf(result.AsSpan(0, k)), new MergedFactors(result, k));
+        return InternScratch(result, k);
     }
 
+    /// <summary>The monomial of the first <paramref name="count"/> factors of the scratch buffer: made only when no equal one lives.</summary>
+    private static Monomial InternScratch(Factor[] buffer, int count) => Table.GetOrAdd(HashOf(buffer.AsSpan(0, count)), new ScratchFactors(buffer, count));
+
     /// <summary>The first <c>Count</c> factors of a scratch buffer, as the key of the monomial they make.</summary>
-    private readonly struct MergedFactors(Factor[] buffer, int count) : IInternKey<Monomial>
+    private readonly struct ScratchFactors(Factor[] buffer, int count) : IInternKey<Monomial>
     {
         public bool Describes(Monomial candidate) => candidate._factors.AsSpan().SequenceEqual(buffer.AsSpan(0, count));
 
@@ -171,7 +174,7 @@ public sealed class Monomial : IComparable<Monomial>
                 result[k++] = factor;
             }
         }
-        return j == y.Length ? Table.GetOrAdd(HashOf(result.AsSpan(0, k)), new MergedFactors(result, k)) : null;
+        return j == y.Length ? InternScratch(result, k) : null;
     }
 
     public override int GetHashCode() => _hash;

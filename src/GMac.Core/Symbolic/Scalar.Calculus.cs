@@ -199,11 +199,8 @@ public sealed partial class Scalar
                 var inner = AtomDerivative(factors[i].Atom, variable, memo);
                 if (inner.IsStructuralZero) continue;
                 // d(a^p) = p a^(p-1) da, times the other factors unchanged.
-                var rest = new List<Factor>(factors.Length);
-                for (var j = 0; j < factors.Length; j++)
-                    if (j != i) rest.Add(factors[j]);
                 var power = factors[i].Power;
-                var others = FromTerm(term.Coefficient * power, Monomial.Intern([.. rest]));
+                var others = FromTerm(term.Coefficient * power, Monomial.WithPower(term.Monomial, factors[i].Atom, 0));
                 sum += others * IntegerPower(factors[i].Atom.AsScalar(), power - 1) * inner;
             }
         }
