@@ -10,29 +10,47 @@ using SafeFiles;
 namespace GMac.Cli.Commands;
 
 /// <summary>
-/// <c>gmac generate [PATH…] --dsl DIR [--check] [--stats] [--cache DIR] [--scalar float|double]</c>: rewrites every
-/// binding point under the paths; with <c>--check</c> only reports files that are out of date.
+/// <c>gmac generate [PATH…] [--sources-from FILE] --dsl DIR [--check] [--stats] [--cache DIR] [--scalar float|double]</c>:
+/// rewrites every binding point under the paths and in the listed files; with <c>--check</c> only
+/// reports files that are out of date.
 /// </summary>
 internal static class GenerateCommand
 {
     public static Command Create()
     {
         var paths = SharedOptions.Paths("C# files or folders whose binding points are rewritten");
+        var sourcesFrom = new Option<string?>("--sources-from")
+        {
+            Description = "also rewrite the C# files listed in FILE, one path a line, relative to FILE's folder (with it, no PATH means none)",
+            HelpName = "FILE",
+        };
+        sourcesFrom.Validators.Add(result =>
+        {
+            if (result.Tokens.Any(t => string.IsNullOrWhiteSpace(t.Value))) result.AddError("--sources-from needs the path of a file listing C# files");
+        });
         var dsl = SharedOptions.Dsl();
         var check = new Option<bool>("--check") { Description = "write nothing; exit 1 if any region is out of date" };
         var stats = SharedOptions.Stats("begin each region with a comment counting its operations");
         var cache = SharedOptions.Cache();
         var scalar = SharedOptions.Scalar("the scalar type of the code where a binding point has no //GMac.Type line (default: double)");
-        var command = new Command("generate", "Rewrite the binding points (#region GMac blocks) of C# files.") { paths, dsl, check, stats, cache, scalar };
+        var command = new Command("generate", "Rewrite the binding points (#region GMac blocks) of C# files.") { paths, sourcesFrom, dsl, check, stats, cache, scalar };
         UnknownOptions.RejectIn(paths, command);
         command.SetAction(r =>
         {
             var watch = Stopwatch.StartNew();
             var error = r.InvocationConfiguration.Error;
+            // A list stands for the files to work on (an MSBuild project's Compile items), so with
+            // one the current folder is not scanned as well unless it is named.
+            var sources = SharedOptions.PathsOrCurrent(r.GetValue(paths));
+            if (r.GetValue(sourcesFrom) is { } list)
+            {
+                if (SourceList.Read(list, error) is not { } listed) return ExitCodes.Diagnostics;
+                sources = [.. r.GetValue(paths) ?? [], .. listed];
+            }
             var context = DslLoader.Load(r.GetValue(dsl)!, r.GetValue(cache), error);
             if (context is null) return ExitCodes.Diagnostics;
             context.DefaultScalarType = r.GetValue(scalar)!;
-            return Execute(context, SharedOptions.PathsOrCurrent(r.GetValue(paths)), r.GetValue(check), r.GetValue(stats), r.InvocationConfiguration.Output, error, watch);
+            return Execute(context, sources, r.GetValue(check), r.GetValue(stats), r.InvocationConfiguration.Output, error, watch);
         });
         return command;
     }

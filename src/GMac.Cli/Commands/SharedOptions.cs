@@ -20,16 +20,30 @@ internal static class SharedOptions
 
     public static Option<bool> Stats(string what) => new("--stats") { Description = what };
 
-    /// <summary>The scalar type of generated code; a binding point's <c>//GMac.Type</c> line overrides it.</summary>
+    /// <summary>
+    /// The scalar type of generated code; a binding point's <c>//GMac.Type</c> line overrides it.
+    /// The name is taken in any case (<c>Float</c>), as MSBuild compares property values.
+    /// </summary>
     public static Option<string> Scalar(string what)
     {
+        var types = GMac.Core.CodeGeneration.CSharpEmitOptions.ScalarTypes;
         var option = new Option<string>("--scalar")
         {
             Description = what,
-            HelpName = string.Join("|", GMac.Core.CodeGeneration.CSharpEmitOptions.ScalarTypes),
+            HelpName = string.Join("|", types),
             DefaultValueFactory = _ => "double",
+            CustomParser = result =>
+            {
+                // no value at all is already an arity error of the parser
+                if (result.Tokens.Count == 0) return null;
+                var value = result.Tokens[^1].Value;
+                var name = value.ToLowerInvariant();
+                if (types.Contains(name)) return name;
+                result.AddError($"--scalar is '{value}'; it must be {string.Join(" or ", types)}.");
+                return null;
+            },
         };
-        option.AcceptOnlyFromAmong([.. GMac.Core.CodeGeneration.CSharpEmitOptions.ScalarTypes]);
+        option.CompletionSources.Add([.. types]);
         return option;
     }
 

@@ -90,6 +90,19 @@ public sealed partial class Generate_ScalarType : IDisposable
         Assert.True(verified == 0, verifyErr + output);
     }
 
+    [Fact]
+    public void The_scalar_option_takes_the_type_name_in_any_case_and_names_the_types_it_refuses()
+    {
+        var path = _temp.Write("Spheres.cs", Source("", "//GMac.Type(\"double\");"));
+        var (exit, _, err) = Tool.Run("generate", path, "--dsl", Dsl, "--cache", Path.Combine(_temp.Path, "cache"), "--scalar", "Float");
+        Assert.True(exit == 0, err);
+        Assert.Contains("float centre_e1 = ", Bodies(File.ReadAllText(path))[0]);
+
+        (exit, _, err) = Tool.Run("generate", path, "--dsl", Dsl, "--scalar", "Half");
+        Assert.Equal(2, exit);
+        Assert.Contains("--scalar is 'Half'; it must be double or float", err);
+    }
+
     [Theory]
     [InlineData("single", "did you mean 'float'?")]
     [InlineData("Double", "did you mean 'double'?")]

@@ -2,8 +2,9 @@ namespace GMac.Cli.Tests.Build;
 
 /// <summary>
 /// The GMacScalar property of build/GMac.targets on a real <c>dotnet build</c>: float code for a
-/// project that asks for it, double again when the property changes (the change alone must
-/// regenerate), and a clear build error for any other value.
+/// project that asks for it (in any case: <c>Float</c>), double again when the property changes
+/// (the change alone must regenerate), and a clear build error for any other value or for a
+/// command line that gmac refuses.
 /// </summary>
 public sealed class MsBuildStep_ScalarProperty
 {
@@ -45,6 +46,21 @@ public sealed class MsBuildStep_ScalarProperty
         var doubleCode = File.ReadAllText(project.KernelsFile);
         Assert.Contains("double w_e1 = ", doubleCode);
         Assert.DoesNotMatch(@"\d+f\b", doubleCode);
+    }
+
+    [Fact]
+    public void Gmac_scalar_in_capitals_writes_float_code_and_a_refused_command_line_is_explained()
+    {
+        using var project = new SampleProject(Kernels, "<GMacScalar>Float</GMacScalar>");
+        var (exit, output) = project.Build(restore: true);
+        Assert.True(exit == 0, output);
+        Assert.Contains("float w_e1 = ", File.ReadAllText(project.KernelsFile));
+
+        // An argument gmac refuses is a build error that names it, not just an exit code.
+        SetScalar(project, "<GMacScalar>Float</GMacScalar><GMacGenerateArguments>--frobnicate</GMacGenerateArguments>");
+        (exit, output) = project.Build();
+        Assert.NotEqual(0, exit);
+        Assert.Matches(@"error : gmac generate exited with code 2: [^\n]*Unrecognized option '--frobnicate'", output);
     }
 
     [Fact]

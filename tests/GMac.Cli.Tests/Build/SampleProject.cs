@@ -3,21 +3,24 @@ using GMac.Cli.Tests.Support;
 namespace GMac.Cli.Tests.Build;
 
 /// <summary>
-/// A small project in a temporary folder that imports the repository's build/GMac.targets, with
-/// one C# file holding a binding point and a two-file DSL: the frame, and the macros it uses
-/// (<c>Sum</c>, and <c>Third</c>, whose constant shows the scalar type of the code).
+/// A small project in a folder <c>Sample/</c> of a temporary folder that imports the repository's
+/// build/GMac.targets, with one C# file holding a binding point and a two-file DSL: the frame, and
+/// the macros it uses (<c>Sum</c>, and <c>Third</c>, whose constant shows the scalar type of the code).
+/// Other files, also beside the project folder, are added with <see cref="Write"/>.
 /// </summary>
 internal sealed class SampleProject : IDisposable
 {
     private readonly TempFolder _temp = new();
 
-    public SampleProject(string kernelsText, string extraProperties = "")
+    private const string Folder = "Sample";
+
+    public SampleProject(string kernelsText, string extraProperties = "", string extraItems = "")
     {
         var targets = Path.Combine(SharedDsl.RepositoryRoot, "build", "GMac.targets");
         // Empty Directory.Build files stop MSBuild from importing any found above the temp folder.
         _temp.Write("Directory.Build.props", "<Project />\n");
         _temp.Write("Directory.Build.targets", "<Project />\n");
-        ProjectFile = _temp.Write("Sample.csproj", $"""
+        ProjectFile = Write("Sample.csproj", $"""
             <Project Sdk="Microsoft.NET.Sdk">
               <PropertyGroup>
                 <TargetFramework>net10.0</TargetFramework>
@@ -26,10 +29,13 @@ internal sealed class SampleProject : IDisposable
                 <GMacDslDirectory>$(MSBuildThisFileDirectory)dsl</GMacDslDirectory>
                 {extraProperties}
               </PropertyGroup>
+              <ItemGroup>
+                {extraItems}
+              </ItemGroup>
               <Import Project="{targets}" />
             </Project>
             """);
-        _temp.Write(Path.Combine("dsl", "frame.gmac"), """
+        Write(Path.Combine("dsl", "frame.gmac"), """
             define frame e3d as
                 basis: {e1, e2, e3}
                 Euclidean
@@ -38,7 +44,7 @@ internal sealed class SampleProject : IDisposable
             define subspace e3d.vectors as basis {e1, e2, e3} end subspace
             define multivector class e3d.Vector as vectors end multivector class
             """);
-        MacroFile = _temp.Write(Path.Combine("dsl", "sum.gmac"), """
+        MacroFile = Write(Path.Combine("dsl", "sum.gmac"), """
             define macro Sum as
                 inputs: { u : e3d.Vector; v : e3d.Vector }
                 outputs: { w : e3d.Vector }
@@ -46,7 +52,7 @@ internal sealed class SampleProject : IDisposable
                     w = u + v;
             end macro
             """);
-        _temp.Write(Path.Combine("dsl", "third.gmac"), """
+        Write(Path.Combine("dsl", "third.gmac"), """
             define macro Third as
                 inputs: { u : e3d.Vector }
                 outputs: { w : e3d.Vector }
@@ -54,7 +60,7 @@ internal sealed class SampleProject : IDisposable
                     w = (1/3) * u;
             end macro
             """);
-        KernelsFile = _temp.Write("Kernels.cs", kernelsText);
+        KernelsFile = Write("Kernels.cs", kernelsText);
     }
 
     public string ProjectFile { get; }
@@ -65,7 +71,10 @@ internal sealed class SampleProject : IDisposable
     public string KernelsFile { get; }
 
     /// <summary>The file the MSBuild step touches after each successful generation.</summary>
-    public string StampFile => Path.Combine(_temp.Path, "obj", DotnetBuild.Configuration, "net10.0", "gmac-generate.stamp");
+    public string StampFile => Path.Combine(_temp.Path, Folder, "obj", DotnetBuild.Configuration, "net10.0", "gmac-generate.stamp");
+
+    /// <summary>Writes a file at a path relative to the project folder (it may lead out of it) and returns its full path.</summary>
+    public string Write(string path, string text) => Path.GetFullPath(_temp.Write(Path.Combine(Folder, path), text));
 
     public (int Exit, string Output) Build(bool restore = false) => DotnetBuild.Run(ProjectFile, restore);
 

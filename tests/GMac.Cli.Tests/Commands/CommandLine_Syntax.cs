@@ -9,7 +9,7 @@ namespace GMac.Cli.Tests.Commands;
 public sealed class CommandLine_Syntax
 {
     [Theory]
-    [InlineData("generate", "--dsl", "--check", "--stats", "--cache")]
+    [InlineData("generate", "--dsl", "--sources-from", "--check", "--stats", "--cache")]
     [InlineData("check", "--dsl", "--timing")]
     [InlineData("show", "--dsl", "--bind", "--min", "--max", "--stats", "--cache")]
     [InlineData("verify", "--dsl", "--seed", "--cache")]
