@@ -116,7 +116,7 @@ internal static class GenerateCommand
             }
             regions += generation.Regions.Count;
             var first = generation.File.Points[0];
-            var firstRegion = SourceSpan.At(path, first.RegionLineNumber, 1);
+            var firstRegion = SourceSpan.At(path, first.RegionLineNumber, first.RegionColumn);
             if (!generation.Changed)
             {
                 index.Record(path, read);
@@ -133,7 +133,7 @@ internal static class GenerateCommand
                 }
                 outOfDate++;
                 foreach (var r in stale)
-                    error.WriteLine(new Diagnostic(DiagnosticCodes.OutOfDate, SourceSpan.At(path, r.Point.RegionLineNumber, 1), $"binding point '{r.Point.MacroName}' is out of date; run 'gmac generate'"));
+                    error.WriteLine(new Diagnostic(DiagnosticCodes.OutOfDate, SourceSpan.At(path, r.Point.RegionLineNumber, r.Point.RegionColumn), $"binding point '{r.Point.MacroName}' is out of date; run 'gmac generate'"));
                 continue;
             }
             byte[] newBytes;

@@ -28,7 +28,8 @@ public sealed class Generate_ConcurrentEdits : IDisposable
 
         Assert.Equal(1, exit);
         Assert.Equal(StaleKernel.Text + UserLine, File.ReadAllText(path));
-        Assert.Matches(@"Normals\.cs\(8,1\): error GMAC0406: the file was changed while gmac generated it", err);
+        // reported at the binding point's #region (line 8, indented by 8)
+        Assert.Matches(@"Normals\.cs\(8,9\): error GMAC0406: the file was changed while gmac generated it", err);
 
         // the edit is not taken for generated output: the next run generates the file
         var (again, _, againErr) = Tool.Generate([Path.Combine(_temp.Path, "code")]);
@@ -51,7 +52,7 @@ public sealed class Generate_ConcurrentEdits : IDisposable
 
         Assert.Equal(1, exit);
         Assert.False(File.Exists(deleted));
-        Assert.Matches(@"Deleted\.cs\(8,1\): error GMAC0406: the file was deleted while gmac generated it; it is not created again", err);
+        Assert.Matches(@"Deleted\.cs\(8,9\): error GMAC0406: the file was deleted while gmac generated it; it is not created again", err);
         Assert.Contains(StaleKernel.GeneratedMarker, File.ReadAllText(other), StringComparison.Ordinal);
     }
 

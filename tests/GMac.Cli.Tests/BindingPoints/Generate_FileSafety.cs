@@ -91,7 +91,7 @@ public sealed class Generate_FileSafety : IDisposable
         var (exit, _, err) = Tool.Generate([Code]);
 
         Assert.Equal(1, exit);
-        Assert.Matches(@"ReadOnly\.cs\(8,1\): error GMAC0406: cannot write the generated code: the file is read-only", err);
+        Assert.Matches(@"ReadOnly\.cs\(8,9\): error GMAC0406: cannot write the generated code: the file is read-only", err);
         Assert.Equal(StaleKernel.Text, File.ReadAllText(path));
     }
 
