@@ -70,7 +70,7 @@ public static class DiagnosticCodes
     public static readonly DiagnosticDescriptor NestedRegion = new("GMAC0403", Error, "a region is nested inside a GMac region", ReportedBy.SourceFiles);
     public static readonly DiagnosticDescriptor InvalidBindingLine = new("GMAC0404", Error, "a //GMac. line cannot be read", ReportedBy.SourceFiles);
     public static readonly DiagnosticDescriptor TargetNotAssignable = new("GMAC0405", Error, "the C# target of an output cannot be assigned", ReportedBy.Generation);
-    public static readonly DiagnosticDescriptor CannotWrite = new("GMAC0406", Error, "the generated code cannot be written; the file is unchanged", ReportedBy.Generate | ReportedBy.Build);
+    public static readonly DiagnosticDescriptor CannotWrite = new("GMAC0406", Error, "the generated code cannot be written, or the file changed during the run; it is left as it is", ReportedBy.Generate | ReportedBy.Build);
     public static readonly DiagnosticDescriptor CannotReadSource = new("GMAC0407", Error, "a path does not exist or a C# file cannot be read", ReportedBy.SourceFiles);
     public static readonly DiagnosticDescriptor InvalidMacroName = new("GMAC0408", Error, "'#region GMac :' is not followed by a macro name", ReportedBy.SourceFiles);
     public static readonly DiagnosticDescriptor InternalError = new("GMAC0409", Error, "a defect of gmac while generating or printing one binding point", ReportedBy.Generation);
