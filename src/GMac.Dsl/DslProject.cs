@@ -34,7 +34,10 @@ public sealed class DslProject
         var bag = new DiagnosticBag();
         if (!Directory.Exists(directory))
         {
-            bag.ReportCannotRead(SourceSpan.None(directory), $"DSL folder '{directory}' does not exist");
+            var message = File.Exists(directory)
+                ? $"'{directory}' is a file, not a DSL folder: name the folder that holds the .gmac files (here '{Path.GetDirectoryName(Path.GetFullPath(directory))}')"
+                : $"DSL folder '{directory}' does not exist";
+            bag.ReportCannotRead(SourceSpan.None(directory), message);
             return FromSources(files, bag.Items);
         }
         var listing = SourceTree.List(directory, "*.gmac");

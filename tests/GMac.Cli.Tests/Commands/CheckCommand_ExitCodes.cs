@@ -36,6 +36,17 @@ public sealed class CheckCommand_ExitCodes : IDisposable
     }
 
     [Fact]
+    public void A_dsl_file_given_for_the_folder_is_called_a_file()
+    {
+        var file = Path.Combine(DslLibrary, "frames.gmac");
+
+        var (exit, _, err) = Run("check", "--dsl", file);
+
+        Assert.Equal(1, exit);
+        Assert.Contains($"{file}(1,1): error GMAC0003: '{file}' is a file, not a DSL folder: name the folder that holds the .gmac files (here '{DslLibrary}')", err);
+    }
+
+    [Fact]
     public void Errors_go_to_stderr_in_msbuild_format_with_exit_1()
     {
         File.WriteAllText(Path.Combine(_temp, "bad.gmac"), "define frame a as basis: {x} Euclidean end frame\ndefine frame a as basis: {x} Euclidean end frame\n");
