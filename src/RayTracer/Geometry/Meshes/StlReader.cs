@@ -154,6 +154,12 @@ public static class StlReader
 
     private static Mesh ReadAscii(StlInput input, string fileName)
     {
+        // Editors on Windows may start the text with a UTF-8 byte-order mark.
+        if (input.Peek(3).SequenceEqual("\uFEFF"u8))
+        {
+            input.Skip(3);
+        }
+
         var tokens = new AsciiTokens(input, fileName);
         var builder = new VertexMerger(0);
         string first = tokens.Next("'solid'");

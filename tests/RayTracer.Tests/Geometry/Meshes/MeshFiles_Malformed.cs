@@ -147,6 +147,16 @@ public class MeshFiles_Malformed
     }
 
     [Fact]
+    public void Ascii_stl_may_start_with_a_byte_order_mark()
+    {
+        const string text = "\uFEFFsolid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n  endloop\n endfacet\nendsolid x\n";
+
+        var mesh = StlReader.Read(new MemoryStream(Encoding.UTF8.GetBytes(text)), "bom.stl");
+
+        Assert.Equal(1, mesh.TriangleCount);
+    }
+
+    [Fact]
     public void Ascii_stl_errors_name_the_column()
     {
         const string text = "solid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 0 1 oops\n  endloop\n endfacet\nendsolid x\n";
