@@ -116,7 +116,7 @@ public struct BoundingBox
     {
         var inv = new Vector3D(1.0 / ray.d.x, 1.0 / ray.d.y, 1.0 / ray.d.z);
         return Intersect(ray.o, inv, double.NegativeInfinity, double.PositiveInfinity, out tEnter, out tExit)
-            && tExit > MathConstants.Epsilon;
+            && tExit > ray.tMin;
     }
 
     /// <summary>

@@ -72,7 +72,7 @@ public sealed class BinaryObject : GeometricObject
             }
 
             // Continue from the rejected point; t is measured along the same direction, so offsets add.
-            current = new Ray(ray.At(offset), ray.d);
+            current = new Ray(ray.At(offset), ray.d, ray.tMin);
         }
 
         tmin = 0;

@@ -18,7 +18,7 @@ public abstract class GeometricObject
     private static ShadingRecord? _scratch;
 
     /// <summary>
-    /// Nearest hit with t greater than <see cref="MathConstants.Epsilon"/>. On a hit the object fills
+    /// Nearest hit with t greater than <see cref="Ray.tMin"/>. On a hit the object fills
     /// <paramref name="sr"/>'s Normal (unit), LocalHitPoint, TextureCoordinates and Material (the
     /// material of the part actually hit, which for compounds and meshes is not this object's own);
     /// the caller sets HitAnObject, HitPoint, T and Ray. On a miss <paramref name="sr"/> is untouched.

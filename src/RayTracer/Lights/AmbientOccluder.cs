@@ -49,7 +49,7 @@ public sealed class AmbientOccluder : Light
     public override RGBColor L(ShadingRecord sr)
     {
         var direction = GetDirection(sr);
-        var shadowRay = new Ray(sr.HitPoint, direction);
+        var shadowRay = sr.SpawnRay(direction);
         var scale = CastsShadows && InShadow(shadowRay, sr) ? MinAmount : 1.0;
         return scale * RadianceScale * Color;
     }

@@ -39,7 +39,7 @@ public sealed class Dielectric : Phong
         var tracer = sr.World!.Tracer!;
         var wo = -sr.Ray.d.Normalized();
         var fr = FresnelBrdf.SampleF(sr, wo, out var wi, out _);
-        var reflected = new Ray(sr.HitPoint, wi);
+        var reflected = sr.SpawnRay(wi);
         var ndotwi = sr.Normal.Dot(wi);
         // The reflected ray stays on the side it came from: inside if n·wi < 0.
         var reflectedFilter = ndotwi < 0 ? FilterInside : FilterOutside;
@@ -56,7 +56,7 @@ public sealed class Dielectric : Phong
         var cosT = Math.Abs(sr.Normal.Dot(wt));
         // Beer's attenuation depends on the hit distance, so only the Fresnel factors enter the throughput.
         var lrr = tracer.TraceSpawned(sr, reflected, fr * cosI, out var tr);
-        var ltt = tracer.TraceSpawned(sr, new Ray(sr.HitPoint, wt), ft * cosT, out var tt);
+        var ltt = tracer.TraceSpawned(sr, sr.SpawnRay(wt), ft * cosT, out var tt);
         return Attenuation(reflectedFilter, tr) * fr * lrr * cosI
             + Attenuation(transmittedFilter, tt) * ft * ltt * cosT;
     }

@@ -23,7 +23,7 @@ public sealed class GlossyReflector : Phong
         if (pdf <= 0)
             return RGBColor.Black;
         var ndotwi = sr.Normal.Dot(wi);
-        return fr * sr.World!.Tracer!.TraceSpawned(sr, new Ray(sr.HitPoint, wi), fr * (ndotwi / pdf)) * (ndotwi / pdf);
+        return fr * sr.World!.Tracer!.TraceSpawned(sr, sr.SpawnRay(wi), fr * (ndotwi / pdf)) * (ndotwi / pdf);
     }
 
     public override RGBColor Shade(ShadingRecord sr) => base.Shade(sr) + BlurredReflection(sr);

@@ -39,7 +39,7 @@ public abstract class Material
             var ndotwi = sr.Normal.Dot(wi);
             if (ndotwi <= 0)
                 continue;
-            if (light.CastsShadows && light.InShadow(new Ray(sr.HitPoint, wi), sr))
+            if (light.CastsShadows && light.InShadow(sr.SpawnRay(wi), sr))
                 continue;
             var term = f(sr, wo, wi) * light.L(sr) * ndotwi;
             if (sampledLights)

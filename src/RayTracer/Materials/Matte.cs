@@ -53,6 +53,6 @@ public class Matte : Material
         if (pdf <= 0 || ndotwi <= 0)
             return RGBColor.Black;
         var tracer = sr.World!.Tracer!;
-        return f * tracer.TraceSpawned(sr, new Ray(sr.HitPoint, wi), f * (ndotwi / pdf)) * (ndotwi / pdf);
+        return f * tracer.TraceSpawned(sr, sr.SpawnRay(wi), f * (ndotwi / pdf)) * (ndotwi / pdf);
     }
 }

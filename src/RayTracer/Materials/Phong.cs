@@ -53,7 +53,7 @@ public class Phong : Material
         var ndotwi = sr.Normal.Dot(wi);
         if (pdf <= 0 || ndotwi <= 0)
             return RGBColor.Black;
-        return f * sr.World!.Tracer!.TraceSpawned(sr, new Ray(sr.HitPoint, wi), f * (ndotwi / pdf)) * (ndotwi / pdf);
+        return f * sr.World!.Tracer!.TraceSpawned(sr, sr.SpawnRay(wi), f * (ndotwi / pdf)) * (ndotwi / pdf);
     }
 
     public override RGBColor GlobalShade(ShadingRecord sr) =>

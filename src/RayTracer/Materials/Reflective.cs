@@ -21,7 +21,7 @@ public class Reflective : Phong
         var wo = -sr.Ray.d.Normalized();
         var fr = ReflectiveBrdf.SampleF(sr, wo, out var wi, out _);
         var cos = Math.Abs(sr.Normal.Dot(wi));
-        return fr * sr.World!.Tracer!.TraceSpawned(sr, new Ray(sr.HitPoint, wi), fr * cos) * cos;
+        return fr * sr.World!.Tracer!.TraceSpawned(sr, sr.SpawnRay(wi), fr * cos) * cos;
     }
 
     public override RGBColor Shade(ShadingRecord sr) => base.Shade(sr) + Mirror(sr);

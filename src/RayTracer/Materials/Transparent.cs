@@ -24,14 +24,14 @@ public sealed class Transparent : Phong
         var tracer = sr.World!.Tracer!;
         var wo = -sr.Ray.d.Normalized();
         var fr = ReflectiveBrdf.SampleF(sr, wo, out var wi, out _);
-        var reflected = new Ray(sr.HitPoint, wi);
+        var reflected = sr.SpawnRay(wi);
         if (SpecularBtdf.TotalInternalReflection(sr))
             return tracer.TraceSpawned(sr, reflected, RGBColor.White); // all light is reflected
         var ft = SpecularBtdf.SampleF(sr, wo, out var wt);
         var cosI = Math.Abs(sr.Normal.Dot(wi));
         var cosT = Math.Abs(sr.Normal.Dot(wt));
         return fr * tracer.TraceSpawned(sr, reflected, fr * cosI) * cosI
-            + ft * tracer.TraceSpawned(sr, new Ray(sr.HitPoint, wt), ft * cosT) * cosT;
+            + ft * tracer.TraceSpawned(sr, sr.SpawnRay(wt), ft * cosT) * cosT;
     }
 
     public override RGBColor Shade(ShadingRecord sr) => base.Shade(sr) + ReflectAndRefract(sr);

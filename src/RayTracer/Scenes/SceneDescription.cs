@@ -43,6 +43,7 @@ public abstract class SceneDescription
         };
         world.ViewPlane.SetSamples(settings.SamplesPerPixel ?? DefaultSamples);
         Populate(world);
+        world.FitRayEpsilon();
         if (world.Camera is null || world.Tracer is null)
             throw new InvalidOperationException($"Scene '{Name}' did not set a camera and a tracer.");
         return world;

@@ -1,3 +1,4 @@
+using RayTracer.Bounds;
 using RayTracer.Colors;
 using RayTracer.Geometry;
 using RayTracer.Lights;
@@ -29,6 +30,40 @@ public class World
     public Camera? Camera { get; set; }
 
     public Tracer? Tracer { get; set; }
+
+    /// <summary>
+    /// Hits nearer than this along a ray from a surface (or the eye) are ignored, against rounding
+    /// ("shadow acne"). <see cref="FitRayEpsilon"/> scales it with the scene; until then it is
+    /// <see cref="MathConstants.Epsilon"/>, right for scenes a few units across.
+    /// </summary>
+    public double RayEpsilon { get; set; } = MathConstants.Epsilon;
+
+    /// <summary>
+    /// Sets <see cref="RayEpsilon"/> once for this scene: <see cref="MathConstants.Epsilon"/> times the
+    /// largest side of the bounded objects' box, so that a mesh a nanometre or ten million kilometres
+    /// across renders as a unit one does; and never below what rounding at the scene's distance from
+    /// the origin needs. Unbounded objects (planes) do not count; with none bounded it stays as it is.
+    /// </summary>
+    public void FitRayEpsilon()
+    {
+        var box = BoundingBox.Empty;
+        foreach (var obj in Objects)
+        {
+            var bounds = obj.GetBoundingBox();
+            if (!bounds.IsEmpty && bounds.IsFinite)
+                box.Include(bounds);
+        }
+        if (box.IsEmpty)
+            return;
+        var size = Math.Max(box.Diagonal.x, Math.Max(box.Diagonal.y, box.Diagonal.z));
+        var reach = Math.Max(MaxAbs(box.Min), MaxAbs(box.Max));
+        // Doubles carry 16 digits: 1e-12 of the coordinates leaves a wide margin over their rounding.
+        var epsilon = Math.Max(MathConstants.Epsilon * size, 1e-12 * reach);
+        if (epsilon > 0 && double.IsFinite(epsilon))
+            RayEpsilon = epsilon;
+    }
+
+    private static double MaxAbs(Point3D p) => Math.Max(Math.Abs(p.x), Math.Max(Math.Abs(p.y), Math.Abs(p.z)));
 
     public void Add(GeometricObject obj) => Objects.Add(obj);
 

@@ -50,6 +50,12 @@ public sealed class ShadingRecord
 
     public World? World { get; set; }
 
+    /// <summary>
+    /// A ray leaving the hit point along <paramref name="direction"/> (a unit vector), which ignores hits
+    /// nearer than the world's <see cref="Scenes.World.RayEpsilon"/> so that it does not find its own surface again.
+    /// </summary>
+    public Ray SpawnRay(Vector3D direction) => new(HitPoint, direction, World?.RayEpsilon ?? MathConstants.Epsilon);
+
     /// <summary>Clears the per-hit state so a record can be reused for another ray.</summary>
     public void Reset()
     {

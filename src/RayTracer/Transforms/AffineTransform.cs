@@ -172,9 +172,9 @@ public sealed class AffineTransform
     public Vector3D InverseTransformVector(Vector3D v) => ApplyLinear(_inv, v);
 
     /// <summary>The ray mapped into the untransformed object's frame (same parameter t on both rays).</summary>
-    public Ray InverseTransformRay(in Ray ray) => new(Apply(_inv, ray.o), ApplyLinear(_inv, ray.d));
+    public Ray InverseTransformRay(in Ray ray) => new(Apply(_inv, ray.o), ApplyLinear(_inv, ray.d), ray.tMin);
 
-    public Ray TransformRay(in Ray ray) => new(Apply(_m, ray.o), ApplyLinear(_m, ray.d));
+    public Ray TransformRay(in Ray ray) => new(Apply(_m, ray.o), ApplyLinear(_m, ray.d), ray.tMin);
 
     /// <summary>Axis-aligned box enclosing the image of <paramref name="box"/>.</summary>
     public BoundingBox TransformBox(in BoundingBox box) => box.Map(TransformPoint);

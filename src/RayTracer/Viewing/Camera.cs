@@ -80,6 +80,7 @@ public abstract class Camera
                 s * (r - 0.5 * vp.VerticalResolution + sp.y));
             if (GetRay(pp, vp, out var ray))
             {
+                ray.tMin = world.RayEpsilon;
                 RayStatistics.CountPrimary();
                 sum += tracer.TraceRay(ray, 0);
             }

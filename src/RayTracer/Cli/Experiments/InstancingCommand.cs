@@ -69,12 +69,12 @@ public static class InstancingCommand
             if (method == CylinderMethod.UCyl)
             {
                 reference = image;
-                AtomicFile.Write(Path.Combine(images, scene + ".png"), ImageFile.EncodePng(image));
+                OutputFile.Write(Path.Combine(images, scene + ".png"), ImageFile.EncodePng(image));
             }
             else if (reference is not null && InstancingExperiment.Compare(reference, image).PixelsOver > 0)
             {
                 var name = InstancingReport.ImageName(scene, method);
-                AtomicFile.Write(Path.Combine(images, name + ".png"), ImageFile.EncodePng(image));
+                OutputFile.Write(Path.Combine(images, name + ".png"), ImageFile.EncodePng(image));
                 written.Add(name);
             }
         });
@@ -85,20 +85,20 @@ public static class InstancingCommand
         var labels = methods.Select(InstancingExperiment.Label).ToList();
         double[] PerScene(CylinderMethod m, Func<InstancingMeasurement, double> pick) =>
             [.. scenes.Select(s => pick(results.Single(r => r.Scene == s && r.Method == m)))];
-        AtomicFile.Write(Path.Combine(images, "time.png"), InstancingCharts.Grouped(
+        OutputFile.Write(Path.Combine(images, "time.png"), InstancingCharts.Grouped(
             "Total test time per scene (Figure 7-4)", "time in tube tests (ms)", groups, labels,
             [.. methods.Select(m => PerScene(m, r => r.TimeMilliseconds))]));
-        AtomicFile.Write(Path.Combine(images, "memory.png"), InstancingCharts.Grouped(
+        OutputFile.Write(Path.Combine(images, "memory.png"), InstancingCharts.Grouped(
             "Total cylinder memory per scene (Figure 7-5)", "memory (KB)", groups, labels,
             [.. methods.Select(m => PerScene(m, r => r.TotalKilobytes))]));
-        AtomicFile.Write(Path.Combine(images, "gain.png"), InstancingCharts.Grouped(
+        OutputFile.Write(Path.Combine(images, "gain.png"), InstancingCharts.Grouped(
             "Gain in test time (Figures 7-6, 7-7)", "gain (%)", groups, [.. InstancingReport.Gains.Select(g => g.Label)],
             [.. InstancingReport.Gains.Select(g => (double[])[.. scenes.Select(s => InstancingReport.Gain(
                 results.Single(r => r.Scene == s && r.Method == g.Method), results.Single(r => r.Scene == s && r.Method == g.Baseline)))])]));
 
         var report = InstancingReport.Write(results, commandLine, run, ImageFolder, written);
         var path = Path.Combine(folder, ReportName);
-        AtomicFile.Write(path, System.Text.Encoding.UTF8.GetBytes(report));
+        OutputFile.Write(path, System.Text.Encoding.UTF8.GetBytes(report));
         stdout.WriteLine($"wrote {path}");
     }
 

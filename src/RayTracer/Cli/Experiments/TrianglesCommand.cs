@@ -59,11 +59,11 @@ public static class TrianglesCommand
                 Rendered = (scene, world, image) => world.ViewPlane.SaveImage(image, Path.Combine(images, scene.Name + ".png")),
             };
             var results = experiment.Run(scenes);
-            AtomicFile.Write(Path.Combine(images, "render-time.png"), TrianglesCharts.RelativeTimes(results, r => r.RenderCpuTime, "render CPU time"));
-            AtomicFile.Write(Path.Combine(images, "nearest-hit-time.png"), TrianglesCharts.RelativeTimes(results, r => r.NearestHitCpuTime, "nearest-hit CPU time"));
-            AtomicFile.Write(Path.Combine(images, "plucker-gain.png"), TrianglesCharts.PluckerGain(results));
+            OutputFile.Write(Path.Combine(images, "render-time.png"), TrianglesCharts.RelativeTimes(results, r => r.RenderCpuTime, "render CPU time"));
+            OutputFile.Write(Path.Combine(images, "nearest-hit-time.png"), TrianglesCharts.RelativeTimes(results, r => r.NearestHitCpuTime, "nearest-hit CPU time"));
+            OutputFile.Write(Path.Combine(images, "plucker-gain.png"), TrianglesCharts.PluckerGain(results));
             var report = Path.Combine(folder, "triangles.md");
-            AtomicFile.Write(report, System.Text.Encoding.UTF8.GetBytes(TrianglesReport.Write(results, scenes, settings, commandLine)));
+            OutputFile.Write(report, System.Text.Encoding.UTF8.GetBytes(TrianglesReport.Write(results, scenes, settings, commandLine)));
             stdout.WriteLine(report);
             return Application.Ok;
         }

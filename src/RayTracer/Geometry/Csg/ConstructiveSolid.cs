@@ -61,8 +61,8 @@ public sealed class ConstructiveSolid : GeometricObject
             return false;
         }
 
-        // March with a unit direction so that the epsilon of the operands is a distance.
-        var unit = new Ray(ray.o, ray.d / length);
+        // March with a unit direction; t, and the nearest t accepted, scale with it.
+        var unit = new Ray(ray.o, ray.d / length, ray.tMin * length);
         Span<double> leftT = stackalloc double[MaxCrossings], leftFrom = stackalloc double[MaxCrossings];
         Span<double> rightT = stackalloc double[MaxCrossings], rightFrom = stackalloc double[MaxCrossings];
         int nl = Crossings(Left, unit, leftT, leftFrom);
@@ -94,7 +94,7 @@ public sealed class ConstructiveSolid : GeometricObject
                 if (sr is not null)
                 {
                     // Repeat the query that found this crossing to get its shading data.
-                    if (!part.Hit(new Ray(unit.At(from), unit.d), out _, sr))
+                    if (!part.Hit(new Ray(unit.At(from), unit.d, unit.tMin), out _, sr))
                     {
                         return false;
                     }
@@ -131,7 +131,7 @@ public sealed class ConstructiveSolid : GeometricObject
     {
         int n = 0;
         double start = 0;
-        while (n < t.Length && solid.Intersect(new Ray(ray.At(start), ray.d), out double dt))
+        while (n < t.Length && solid.Intersect(new Ray(ray.At(start), ray.d, ray.tMin), out double dt))
         {
             from[n] = start;
             start += dt;

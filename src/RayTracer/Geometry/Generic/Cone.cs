@@ -72,7 +72,7 @@ public sealed class Cone : GeometricObject
         {
             // The quadric is a double cone; keep the nappe between base and apex.
             double y = ray.o.y + roots[i] * ray.d.y;
-            if (roots[i] > MathConstants.Epsilon && y >= 0 && y <= Height)
+            if (roots[i] > ray.tMin && y >= 0 && y <= Height)
             {
                 t = roots[i];
                 return true;

@@ -11,7 +11,7 @@ public class GenericPlane : GeometricObject
     public override bool Intersect(in Ray ray, out double t)
     {
         t = ray.d.y == 0 ? 0 : -ray.o.y / ray.d.y;
-        if (ray.d.y == 0 || !(t > MathConstants.Epsilon) || !double.IsFinite(t))
+        if (ray.d.y == 0 || !(t > ray.tMin) || !double.IsFinite(t))
         {
             return false;
         }

@@ -71,7 +71,7 @@ public class OpenCylinder : GeometricObject
             roots);
         for (int i = 0; i < n; i++)
         {
-            if (roots[i] > MathConstants.Epsilon && Accept(ray.At(roots[i])))
+            if (roots[i] > ray.tMin && Accept(ray.At(roots[i])))
             {
                 t = roots[i];
                 return true;

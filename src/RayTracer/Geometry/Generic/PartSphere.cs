@@ -73,13 +73,13 @@ public sealed class PartSphere : GeometricObject
     {
         if (SphereSolver.Intersect(ray, Point3D.Origin, Radius, out double t0, out double t1))
         {
-            if (t0 > MathConstants.Epsilon && Accept(ray.At(t0)))
+            if (t0 > ray.tMin && Accept(ray.At(t0)))
             {
                 t = t0;
                 return true;
             }
 
-            if (t1 > MathConstants.Epsilon && Accept(ray.At(t1)))
+            if (t1 > ray.tMin && Accept(ray.At(t1)))
             {
                 t = t1;
                 return true;

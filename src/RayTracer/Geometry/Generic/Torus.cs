@@ -115,7 +115,7 @@ public class Torus : GeometricObject
         for (int i = 0; i < n; i++)
         {
             double ti = roots[i] + shift;
-            if (ti > MathConstants.Epsilon && Accept(ray.At(ti)))
+            if (ti > ray.tMin && Accept(ray.At(ti)))
             {
                 t = ti;
                 return true;

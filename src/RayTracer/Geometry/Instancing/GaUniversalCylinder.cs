@@ -114,14 +114,14 @@ public sealed class GaUniversalCylinder : GeometricObject
             if (r0 > r1)
                 (r0, r1) = (r1, r0);
             height = height0 + r0 * rate;
-            if (r0 > MathConstants.Epsilon && height >= 0 && height <= _height)
+            if (r0 > ray.tMin && height >= 0 && height <= _height)
             {
                 t = r0;
                 return true;
             }
 
             height = height0 + r1 * rate;
-            if (r1 > MathConstants.Epsilon && height >= 0 && height <= _height)
+            if (r1 > ray.tMin && height >= 0 && height <= _height)
             {
                 t = r1;
                 return true;

@@ -106,7 +106,8 @@ public sealed class RstrInstance : GeometricObject
 
     private Ray ToLocal(in Ray ray)
     {
-        var local = new Ray();
+        // The map keeps t (the direction is not renormalised), so the nearest distance accepted carries over.
+        var local = new Ray { tMin = ray.tMin };
 
         #region GMac : RstrInverseRay
         //GMac.Bind("p.e1", "<_px>");

@@ -90,7 +90,8 @@ public sealed class TsrInstance : GeometricObject
 
     private Ray ToLocal(in Ray ray)
     {
-        var local = new Ray();
+        // The map keeps t (the direction is not renormalised), so the nearest distance accepted carries over.
+        var local = new Ray { tMin = ray.tMin };
 
         #region GMac : TsrInverseRay
         //GMac.Bind("translation.e1", "<_tsr.tx>");

@@ -17,6 +17,9 @@ public static class PlyReader
 {
     private const int MaxHeaderBytes = 1 << 20;
 
+    /// <summary>2^53: up to here every integer is exact as a double.</summary>
+    private const double MaxExactInteger = 9007199254740992;
+
     public static Mesh Read(string path)
     {
         using var stream = File.OpenRead(path);
@@ -266,6 +269,10 @@ public static class PlyReader
                     }
 
                     input.EnsureRoomFor(count, property.Type, element.Name, i);
+                    if (count > int.MaxValue)
+                    {
+                        throw input.ErrorHere($"a list in {element.Name} {i} declares {count} items, more than any PLY reader takes ({int.MaxValue})");
+                    }
 
                     if (p == listIndex)
                     {
@@ -410,12 +417,23 @@ public static class PlyReader
             }
         }
 
+        /// <summary>
+        /// A whole number; its range is the caller's to check, so that it can say what the number is for
+        /// (a list length, a vertex index). Every binary integer type fits a long exactly.
+        /// </summary>
         public long ReadInteger(Scalar type, string element, long index)
         {
+            long start = Offset;
             double value = ReadScalar(type, element, index);
-            if (value != Math.Floor(value) || Math.Abs(value) > int.MaxValue)
+            if (value != Math.Floor(value))
             {
-                throw ErrorHere($"expected an integer in {element} {index}, found {value.ToString(CultureInfo.InvariantCulture)}");
+                throw ErrorHere($"expected an integer in {element} {index}, found {value.ToString(CultureInfo.InvariantCulture)}", start);
+            }
+
+            // Only ASCII text can go beyond; a long holds every integer of the binary types.
+            if (Math.Abs(value) > MaxExactInteger)
+            {
+                throw ErrorHere($"the integer {value.ToString(CultureInfo.InvariantCulture)} in {element} {index} is too large", start);
             }
 
             return (long)value;

@@ -12,7 +12,7 @@ namespace RayTracer.Geometry.Meshes;
 public static class PlyWriter
 {
     public static void Write(Mesh mesh, string path, PlyFormat format) =>
-        AtomicFile.Write(path, stream => Write(mesh, stream, format));
+        OutputFile.Write(path, stream => Write(mesh, stream, format));
 
     public static void Write(Mesh mesh, Stream stream, PlyFormat format)
     {

@@ -14,7 +14,7 @@ namespace RayTracer.Geometry.Meshes;
 public static class StlWriter
 {
     public static void Write(Mesh mesh, string path, StlFormat format) =>
-        AtomicFile.Write(path, stream => Write(mesh, stream, format));
+        OutputFile.Write(path, stream => Write(mesh, stream, format));
 
     public static void Write(Mesh mesh, Stream stream, StlFormat format)
     {

@@ -11,7 +11,7 @@ namespace RayTracer.Geometry.Solvers;
 /// </summary>
 public static class AlgebraicTriangleSolver
 {
-    /// <summary>Hit with t in (<see cref="MathConstants.Epsilon"/>, tMax), with the barycentrics of v1 (beta) and v2 (gamma).</summary>
+    /// <summary>Hit with t in (<see cref="Ray.tMin"/>, tMax), with the barycentrics of v1 (beta) and v2 (gamma).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static bool Intersect(
         in Ray ray, in Point3D v0, in Vector3D e1, in Vector3D e2, double tMax,
@@ -50,6 +50,6 @@ public static class AlgebraicTriangleSolver
         if (gamma < 0 || beta + gamma > 1)
             return double.PositiveInfinity;
         double t = (a * p - b * r + d * s) * inv;
-        return t > MathConstants.Epsilon && t < tMax ? t : double.PositiveInfinity;
+        return t > ray.tMin && t < tMax ? t : double.PositiveInfinity;
     }
 }

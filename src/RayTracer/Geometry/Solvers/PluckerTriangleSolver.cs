@@ -12,7 +12,7 @@ namespace RayTracer.Geometry.Solvers;
 /// </summary>
 public static class PluckerTriangleSolver
 {
-    /// <summary>Hit with t in (<see cref="MathConstants.Epsilon"/>, tMax), with the barycentrics of v1 (beta) and v2 (gamma).</summary>
+    /// <summary>Hit with t in (<see cref="Ray.tMin"/>, tMax), with the barycentrics of v1 (beta) and v2 (gamma).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static bool Intersect(
         in Ray ray, in Point3D v0, in Point3D v1, in Point3D v2, double tMax,
@@ -118,7 +118,7 @@ public static class PluckerTriangleSolver
         tn = (a.x - c.x) * (t1 * a.z - t2 * a.y) - (c.y - a.y) * (t2 * a.x - t0 * a.z) - (c.z - a.z) * (t0 * a.y - t1 * a.x);
         #endregion
 
-        return Finish(d1, d2, d3, tn, tMax, out beta, out gamma);
+        return Finish(d1, d2, d3, tn, ray.tMin, tMax, out beta, out gamma);
     }
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -161,7 +161,7 @@ public static class PluckerTriangleSolver
         tn = ray.o.x * triangle.Plane.yzo + ray.o.z * triangle.Plane.xyo - ray.o.y * triangle.Plane.xzo - triangle.Plane.xyz;
         #endregion
 
-        return Finish(d1, d2, d3, tn, tMax, out beta, out gamma);
+        return Finish(d1, d2, d3, tn, ray.tMin, tMax, out beta, out gamma);
     }
 
     /// <summary>The third distance against the first two, which already agree.</summary>
@@ -171,7 +171,7 @@ public static class PluckerTriangleSolver
 
     /// <summary>(6.19) and (6.20) with one division, once the ray is known to pass through the triangle.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static double Finish(double d1, double d2, double d3, double tn, double tMax, out double beta, out double gamma)
+    private static double Finish(double d1, double d2, double d3, double tn, double tMin, double tMax, out double beta, out double gamma)
     {
         beta = gamma = 0;
         double sum = d1 + d2 + d3;
@@ -179,7 +179,7 @@ public static class PluckerTriangleSolver
             return double.PositiveInfinity; // ray parallel to the plane, or the triangle degenerate
         double inv = 1.0 / sum;
         double t = tn * inv;
-        if (!(t > MathConstants.Epsilon && t < tMax))
+        if (!(t > tMin && t < tMax))
             return double.PositiveInfinity;
         beta = d3 * inv;
         gamma = d1 * inv;

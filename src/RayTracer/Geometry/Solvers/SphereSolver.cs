@@ -31,13 +31,13 @@ public static class SphereSolver
     {
         if (Intersect(ray, center, radius, out double t0, out double t1))
         {
-            if (t0 > MathConstants.Epsilon)
+            if (t0 > ray.tMin)
             {
                 t = t0;
                 return true;
             }
 
-            if (t1 > MathConstants.Epsilon)
+            if (t1 > ray.tMin)
             {
                 t = t1;
                 return true;

@@ -11,7 +11,7 @@ namespace RayTracer.Geometry.Solvers;
 public static class TriangleSolver
 {
     /// <summary>
-    /// Hit with t in (<see cref="MathConstants.Epsilon"/>, tMax). Outputs the barycentric
+    /// Hit with t in (<see cref="Ray.tMin"/>, tMax). Outputs the barycentric
     /// coordinates of v1 (beta) and v2 (gamma).
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -50,7 +50,7 @@ public static class TriangleSolver
         }
 
         t = (e2.x * qx + e2.y * qy + e2.z * qz) * inv;
-        return t > MathConstants.Epsilon && t < tMax;
+        return t > ray.tMin && t < tMax;
     }
 
     /// <summary>
@@ -88,6 +88,6 @@ public static class TriangleSolver
         }
 
         double t = (e2.x * qx + e2.y * qy + e2.z * qz) * inv;
-        return t > MathConstants.Epsilon && t < tMax ? t : double.PositiveInfinity;
+        return t > ray.tMin && t < tMax ? t : double.PositiveInfinity;
     }
 }

@@ -95,9 +95,9 @@ public sealed class Box : GeometricObject
             }
         }
 
-        if (tIn < tOut && tOut > MathConstants.Epsilon)
+        if (tIn < tOut && tOut > ray.tMin)
         {
-            if (tIn > MathConstants.Epsilon)
+            if (tIn > ray.tMin)
             {
                 t = tIn;
                 face = faceIn;

@@ -105,7 +105,7 @@ public sealed class Cylinder : GeometricObject
         for (int i = 0; i < n; i++)
         {
             double h = oAxial + roots[i] * dAxial;
-            if (roots[i] > MathConstants.Epsilon && h >= 0 && h <= _height)
+            if (roots[i] > ray.tMin && h >= 0 && h <= _height)
             {
                 t = roots[i];
                 part = 0;
@@ -118,7 +118,7 @@ public sealed class Cylinder : GeometricObject
             for (int cap = 1; cap <= 2; cap++)
             {
                 double tc = ((cap == 1 ? 0 : _height) - oAxial) / dAxial;
-                if (tc > MathConstants.Epsilon && tc < t && (oPerp + tc * dPerp).LengthSquared <= Radius * Radius)
+                if (tc > ray.tMin && tc < t && (oPerp + tc * dPerp).LengthSquared <= Radius * Radius)
                 {
                     t = tc;
                     part = cap;

@@ -39,7 +39,7 @@ public sealed class Disk : GeometricObject, ISampledShape
         }
 
         t = Normal.Dot(Center - ray.o) / denom;
-        return t > MathConstants.Epsilon && double.IsFinite(t) && ray.At(t).DistanceSquared(Center) < Radius * Radius;
+        return t > ray.tMin && double.IsFinite(t) && ray.At(t).DistanceSquared(Center) < Radius * Radius;
     }
 
     public override bool Hit(in Ray ray, out double tmin, ShadingRecord sr)

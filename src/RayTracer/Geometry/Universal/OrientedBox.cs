@@ -109,9 +109,9 @@ public sealed class OrientedBox : GeometricObject
             }
         }
 
-        if (tIn < tOut && tOut > MathConstants.Epsilon)
+        if (tIn < tOut && tOut > ray.tMin)
         {
-            bool entering = tIn > MathConstants.Epsilon;
+            bool entering = tIn > ray.tMin;
             t = entering ? tIn : tOut;
             int axis = entering ? axisIn : axisOut;
             normal = new Normal3D((entering ? signIn : signOut) * _axes[axis]);

@@ -26,7 +26,7 @@ public sealed class Plane : GeometricObject
     {
         double denom = Normal.Dot(ray.d);
         t = denom == 0 ? 0 : Normal.Dot(Point - ray.o) / denom;
-        return denom != 0 && t > MathConstants.Epsilon && double.IsFinite(t);
+        return denom != 0 && t > ray.tMin && double.IsFinite(t);
     }
 
     public override bool Hit(in Ray ray, out double tmin, ShadingRecord sr)

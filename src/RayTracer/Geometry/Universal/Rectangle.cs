@@ -84,7 +84,7 @@ public sealed class Rectangle : GeometricObject, ISampledShape
         u = v = 0;
         double denom = Normal.Dot(ray.d);
         t = denom == 0 ? 0 : Normal.Dot(Corner - ray.o) / denom;
-        if (denom == 0 || !(t > MathConstants.Epsilon) || !double.IsFinite(t))
+        if (denom == 0 || !(t > ray.tMin) || !double.IsFinite(t))
         {
             return false;
         }

@@ -240,6 +240,7 @@ public sealed class Gpcm(IParametricSurface surface, GpcmMapping mapping = GpcmM
         // made the JIT keep the direction in memory, which cost the pinhole a third of its time.
         ray.o = orientation.Eye;
         ray.d = RayDirection == GpcmRayDirection.Inward ? new Vector3D(-direction.x, -direction.y, -direction.z) : direction;
+        ray.tMin = MathConstants.Epsilon;
         return true;
     }
 

@@ -8,7 +8,8 @@ namespace RayTracer.Viewing.Imaging;
 
 /// <summary>
 /// Reads PNG (any bit depth, interlaced or not), JPEG, TGA, BMP and Radiance HDR images, and writes PNG
-/// and HDR, through the stb image libraries. Files are written atomically (see <see cref="AtomicFile"/>).
+/// and HDR, through the stb image libraries. Files are written atomically, a FIFO is
+/// written into, and other special files are refused rather than replaced (see <see cref="OutputFile"/>).
 /// </summary>
 public static class ImageFile
 {
@@ -131,11 +132,12 @@ public static class ImageFile
         return stream.ToArray();
     }
 
+    /// <summary>Creates the folder if needed; see <see cref="OutputFile"/> for what is done to a file already there.</summary>
     private static void Save(string path, Action<Stream> write)
     {
         var directory = Path.GetDirectoryName(Path.GetFullPath(path));
         if (!string.IsNullOrEmpty(directory))
             Directory.CreateDirectory(directory);
-        AtomicFile.Write(path, write);
+        OutputFile.Write(path, write);
     }
 }

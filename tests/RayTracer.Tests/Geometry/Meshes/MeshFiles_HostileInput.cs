@@ -155,6 +155,71 @@ public class MeshFiles_HostileInput
         Assert.Contains("facet 1 vertex 2 has a non-finite y", e.Message);
     }
 
+    private static byte[] BinaryStl(int triangles)
+    {
+        using var stream = new MemoryStream();
+        StlWriter.Write(MeshSamples.FloatExactSoup(triangles, 1), stream, StlFormat.Binary);
+        return stream.ToArray();
+    }
+
+    [Fact]
+    public void An_endless_binary_stl_is_read_no_further_than_its_declared_triangles()
+    {
+        byte[] stl = BinaryStl(3);
+        var endless = new EndlessStream(stl, limit: 64 << 20);
+
+        var e = Assert.Throws<MeshFormatException>(() => StlReader.Read(endless, "endless.stl"));
+
+        Assert.Equal(stl.Length, e.ByteOffset);
+        Assert.Contains("binary STL declares 3 triangles (234 bytes) but the file goes on after them", e.Message);
+        // One read buffer, not the stream: memory follows the triangles, not what the file holds.
+        Assert.True(endless.BytesRead <= 1 << 16, $"{endless.BytesRead} bytes read");
+    }
+
+    [Fact]
+    public void A_link_to_dev_zero_is_a_clear_error()
+    {
+        if (!File.Exists("/dev/zero"))
+        {
+            return;
+        }
+
+        var link = Path.Combine(Path.GetTempPath(), Guid.NewGuid().ToString("N") + "-zero.stl");
+        File.CreateSymbolicLink(link, "/dev/zero");
+        try
+        {
+            var e = Assert.Throws<MeshFormatException>(() => MeshFile.Read(link));
+            Assert.Equal(84, e.ByteOffset);
+            Assert.Contains("declares 0 triangles (84 bytes) but the file goes on after them", e.Message);
+        }
+        finally
+        {
+            File.Delete(link);
+        }
+    }
+
+    [Fact]
+    public void A_huge_sparse_stl_is_refused_by_its_size_without_reading_it()
+    {
+        var path = Path.Combine(Path.GetTempPath(), Guid.NewGuid().ToString("N") + "-sparse.stl");
+        using (var file = File.Create(path))
+        {
+            // 3 GB of zeros that take no disk space: its header declares no triangles.
+            file.SetLength(3L << 30);
+        }
+
+        try
+        {
+            var e = Assert.Throws<MeshFormatException>(() => MeshFile.Read(path));
+            Assert.Equal(84, e.ByteOffset);
+            Assert.Contains($"binary STL declares 0 triangles (84 bytes) but the file has {3L << 30} bytes", e.Message);
+        }
+        finally
+        {
+            File.Delete(path);
+        }
+    }
+
     [Theory]
     [InlineData("empty.ply")]
     [InlineData("empty.stl")]

@@ -117,6 +117,93 @@ public class MeshFiles_Malformed
     }
 
     [Fact]
+    public void A_binary_stl_whose_header_starts_with_solid_is_reported_as_binary()
+    {
+        using var stream = new MemoryStream();
+        StlWriter.Write(MeshSamples.FloatExactSoup(4, 1), stream, StlFormat.Binary);
+        byte[] bytes = stream.ToArray();
+        Encoding.ASCII.GetBytes("solid exported by a CAD tool").CopyTo(bytes, 0);
+        bytes[80] = 5;
+
+        var e = Assert.Throws<MeshFormatException>(() => StlReader.Read(new MemoryStream(bytes), "solid.stl"));
+
+        // 4 triangles are there, 5 are declared: the file ends inside the fifth.
+        Assert.Equal(bytes.Length, e.ByteOffset);
+        Assert.Contains("binary STL declares 5 triangles (334 bytes) but the file ends inside triangle 4", e.Message);
+        Assert.Contains("header starts with 'solid'", e.Message);
+    }
+
+    [Fact]
+    public void Ascii_stl_without_solid_is_reported_as_ascii_at_its_first_word()
+    {
+        const string text = "\n  facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n  endloop\n endfacet\nendsolid x\n";
+
+        var e = Assert.Throws<MeshFormatException>(() => StlReader.Read(new MemoryStream(Encoding.ASCII.GetBytes(text)), "nosolid.stl"));
+
+        Assert.Equal(2, e.Line);
+        Assert.Equal(3, e.Column);
+        Assert.Contains("an ASCII STL file starts with 'solid', found 'facet'", e.Message);
+        Assert.DoesNotContain("binary", e.Message.Replace("not binary STL", "", StringComparison.Ordinal));
+    }
+
+    [Fact]
+    public void Ascii_stl_may_start_with_a_byte_order_mark()
+    {
+        const string text = "\uFEFFsolid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n  endloop\n endfacet\nendsolid x\n";
+
+        var mesh = StlReader.Read(new MemoryStream(Encoding.UTF8.GetBytes(text)), "bom.stl");
+
+        Assert.Equal(1, mesh.TriangleCount);
+    }
+
+    [Fact]
+    public void Ascii_stl_errors_name_the_column()
+    {
+        const string text = "solid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 0 1 oops\n  endloop\n endfacet\nendsolid x\n";
+
+        var e = Assert.Throws<MeshFormatException>(() => StlReader.Read(new MemoryStream(Encoding.ASCII.GetBytes(text)), "bad.stl"));
+
+        Assert.Equal((6, 15), (e.Line, e.Column));
+        Assert.StartsWith("bad.stl(6,15): 'oops' is not a number", e.Message);
+    }
+
+    [Theory]
+    [InlineData(false)]
+    [InlineData(true)]
+    public void A_ply_list_length_of_uint_max_is_reported_as_a_list_length(bool asPipe)
+    {
+        string header = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n" +
+            "element face 1\nproperty list uint int vertex_indices\nend_header\n";
+        var body = new byte[9 * 4 + 4 + 12];
+        BitConverter.GetBytes(1f).CopyTo(body, 12);
+        BitConverter.GetBytes(1f).CopyTo(body, 28);
+        BitConverter.GetBytes(uint.MaxValue).CopyTo(body, 36);
+        byte[] bytes = [.. Encoding.ASCII.GetBytes(header), .. body];
+        Stream stream = asPipe ? new ForwardOnlyStream(bytes) : new MemoryStream(bytes);
+
+        var e = Assert.Throws<MeshFormatException>(() => PlyReader.Read(stream, "list.ply"));
+
+        Assert.Equal(bytes.Length - 12, e.ByteOffset);
+        Assert.Contains("a list in face 0 declares 4294967295 items", e.Message);
+        Assert.DoesNotContain("expected an integer", e.Message);
+    }
+
+    [Fact]
+    public void A_ply_vertex_index_of_uint_max_is_reported_as_an_index()
+    {
+        string header = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n" +
+            "element face 1\nproperty list uchar uint vertex_indices\nend_header\n";
+        var body = new byte[9 * 4 + 1 + 12];
+        body[36] = 3;
+        BitConverter.GetBytes(uint.MaxValue).CopyTo(body, 37 + 8);
+        byte[] bytes = [.. Encoding.ASCII.GetBytes(header), .. body];
+
+        var e = Assert.Throws<MeshFormatException>(() => PlyReader.Read(new MemoryStream(bytes), "index.ply"));
+
+        Assert.Contains("face 0 refers to vertex 4294967295, but there are 3 vertices", e.Message);
+    }
+
+    [Fact]
     public void Garbage_that_is_neither_format_is_rejected()
     {
         var e = Assert.Throws<MeshFormatException>(() => StlReader.Read(new MemoryStream(new byte[40]), "tiny.stl"));
