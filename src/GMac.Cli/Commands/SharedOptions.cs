@@ -5,16 +5,9 @@ namespace GMac.Cli.Commands;
 /// <summary>The options every command that loads a GMacDSL folder takes, made fresh for each command.</summary>
 internal static class SharedOptions
 {
-    public static Option<string> Dsl() => new("--dsl")
-    {
-        Description = "the GMacDSL folder (its .gmac files)",
-        HelpName = "DIR",
-        Required = true,
-    };
-
     public static Option<string?> Cache() => new("--cache")
     {
-        Description = "where simplifier answers are cached (default: DIR/.gmac-cache)",
+        Description = "where simplifier answers are cached (default: .gmac-cache in the first --dsl folder, or beside the first --dsl file)",
         HelpName = "DIR",
     };
 
