@@ -47,7 +47,7 @@ public sealed class DslProject
             if (File.Exists(source))
             {
                 if (!source.EndsWith(".gmac", StringComparison.OrdinalIgnoreCase))
-                    bag.ReportCannotRead(SourceSpan.None(source), $"'{source}' is a file, not a GMacDSL folder or a .gmac file");
+                    bag.ReportCannotRead(SourceSpan.None(source), $"'{source}' is a file, not a DSL folder or a .gmac file: name the folder that holds the .gmac files (here '{Path.GetDirectoryName(Path.GetFullPath(source))}') or the .gmac files themselves");
                 else if (SourceTree.WhyNotReadable(source) is { } why) bag.ReportCannotRead(SourceSpan.None(source), why);
                 else if (seen.Add(RealPath.Of(source))) paths.Add(source);
                 continue;

@@ -6,9 +6,11 @@ namespace SafeFiles;
 /// <summary>
 /// Replaces a file's content through a temporary sibling and an atomic rename, so a crash, a full
 /// disk or an interrupt leaves either the old file or the new one, never half of one. A replaced
-/// file keeps its permissions and, where the system allows, its owner; a symbolic link stays a link
-/// and its target gets the content. Temporary names are hidden and random (<c>.NAME.RANDOM.tmp</c>),
-/// so they never collide with a user's file or with another run's.
+/// file keeps its permissions, its extended attributes and, where the system allows, its owner; a
+/// symbolic link stays a link and its target gets the content. A file with several hard links is
+/// rewritten in place instead, so that every name of it gets the content (see <see cref="OverwriteInPlace"/>).
+/// Temporary names are hidden and random (<c>.NAME.RANDOM.tmp</c>), so they never collide with a
+/// user's file or with another run's.
 /// </summary>
 public static class AtomicFile
 {
@@ -33,7 +35,25 @@ public static class AtomicFile
     }
 
     /// <summary>Writes what <paramref name="write"/> puts in the stream; if it throws, the file is left as it was.</summary>
-    public static void Write(string path, Action<Stream> write)
+    public static void Write(string path, Action<Stream> write) => Write(path, write, expected: null);
+
+    /// <summary>
+    /// Writes <paramref name="contents"/> to <paramref name="path"/> only if the file still holds
+    /// exactly <paramref name="expected"/>, what the caller read and derived the contents from: it is
+    /// compared just before the rename, so an edit made meanwhile by another program is kept, and a
+    /// file deleted meanwhile is not created again.
+    /// </summary>
+    /// <exception cref="FileChangedException">The file changed or was deleted since it was read; it is left as it is.</exception>
+    /// <exception cref="IOException">The file could not be written; it is left as it was.</exception>
+    /// <exception cref="UnauthorizedAccessException">The system refused the write; the file is left as it was.</exception>
+    public static void Replace(string path, ReadOnlySpan<byte> contents, byte[] expected)
+    {
+        ArgumentNullException.ThrowIfNull(expected);
+        var copy = contents.ToArray();
+        Write(path, stream => stream.Write(copy), expected);
+    }
+
+    private static void Write(string path, Action<Stream> write, byte[]? expected)
     {
         ArgumentNullException.ThrowIfNull(write);
         lock (Gate)
@@ -42,6 +62,7 @@ public static class AtomicFile
             if (_terminating) throw new IOException("the run was interrupted");
             var target = FinalTarget(path);
             var exists = File.Exists(target);
+            if (expected is not null && !exists) throw new FileChangedException(target, deleted: true);
             if (exists) ThrowIfNotWritable(target);
             RemoveStaleTemps(target);
             var temp = CreateTemp(target, privateUntilRenamed: exists);
@@ -52,16 +73,85 @@ public static class AtomicFile
                     write(stream);
                     stream.Flush(flushToDisk: true);
                 }
-                if (exists && !OperatingSystem.IsWindows()) CopyOwnerAndMode(target, temp);
-                File.Move(temp, target, overwrite: true);
-                Pending.Remove(temp);
+                // a rename would give the other names of a hard-linked file nothing, so it is written in place
+                var inPlace = exists && FileStat.LinkCountOf(target) > 1;
+                if (exists && !inPlace && !OperatingSystem.IsWindows()) CopyOwnerAttributesAndMode(target, temp);
+                if (expected is not null) ThrowIfChanged(target, expected);
+                if (inPlace)
+                {
+                    OverwriteInPlace(temp, target);
+                    Abandon(temp);
+                }
+                else
+                {
+                    File.Move(temp, target, overwrite: true);
+                    Pending.Remove(temp);
+                }
             }
             catch
             {
-                Abandon(temp);
+                // not pending any more: kept on purpose (see OverwriteInPlace)
+                if (Pending.Contains(temp)) Abandon(temp);
                 throw;
             }
         }
+    }
+
+    /// <summary>
+    /// Throws unless <paramref name="target"/> holds exactly <paramref name="expected"/>. Another
+    /// program could still write between this check and the rename that follows, but that window
+    /// is microseconds, not the length of the caller's run.
+    /// </summary>
+    private static void ThrowIfChanged(string target, byte[] expected)
+    {
+        byte[] now;
+        try
+        {
+            now = File.ReadAllBytes(target);
+        }
+        catch (Exception e) when (e is FileNotFoundException or DirectoryNotFoundException)
+        {
+            throw new FileChangedException(target, deleted: true);
+        }
+        if (!now.AsSpan().SequenceEqual(expected)) throw new FileChangedException(target, deleted: false);
+    }
+
+    /// <summary>
+    /// Copies the finished temporary file into <paramref name="target"/> itself, keeping its inode
+    /// and so every hard link, owner, mode and extended attribute. This is not atomic: if the copy
+    /// fails, the old content is written back; if even that fails, the temporary file with the new
+    /// content is kept and named in the error, so nothing is lost.
+    /// </summary>
+    private static void OverwriteInPlace(string temp, string target)
+    {
+        var old = File.ReadAllBytes(target);
+        try
+        {
+            using var source = new FileStream(temp, FileMode.Open, FileAccess.Read, FileShare.Read);
+            CopyInto(target, source);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            try
+            {
+                using var back = new MemoryStream(old, writable: false);
+                CopyInto(target, back);
+            }
+            catch (Exception again) when (again is IOException or UnauthorizedAccessException)
+            {
+                Pending.Remove(temp); // keep it: it is the only whole copy of the new content
+                throw new IOException($"'{target}' has several hard links and was being rewritten in place when this failed: {e.Message}; putting its old content back failed too ({again.Message}): the new content is in '{temp}'", e);
+            }
+            throw new IOException($"'{target}' has several hard links and could not be rewritten in place: {e.Message}; its old content was put back", e);
+        }
+    }
+
+    private static void CopyInto(string target, Stream source)
+    {
+        using var stream = new FileStream(target, FileMode.Open, FileAccess.Write, FileShare.None, 1 << 16);
+        source.CopyTo(stream);
+        stream.SetLength(source.Length);
+        stream.Flush(flushToDisk: true);
     }
 
     /// <summary>Writes <paramref name="bytes"/>; returns null on success, else why it could not (the file is then unchanged).</summary>
@@ -135,11 +225,13 @@ public static class AtomicFile
     }
 
     [System.Runtime.Versioning.UnsupportedOSPlatform("windows")]
-    private static void CopyOwnerAndMode(string target, string temp)
+    private static void CopyOwnerAttributesAndMode(string target, string temp)
     {
         // owner first: changing it clears set-user-id and set-group-id bits
         if (FileStat.OwnerOf(target) is { } owner && FileStat.OwnerOf(temp) != owner)
             FileStat.TryChangeOwner(temp, owner.User, owner.Group);
+        // before the mode: an access-control list is an attribute, and setting it rewrites the group bits
+        ExtendedAttributes.Copy(target, temp);
         File.SetUnixFileMode(temp, File.GetUnixFileMode(target));
     }
 

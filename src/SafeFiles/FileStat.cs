@@ -3,7 +3,7 @@ using System.Runtime.InteropServices;
 namespace SafeFiles;
 
 /// <summary>
-/// The file type and owner of a path, which .NET does not expose: <c>statx</c> on Linux (one
+/// The file type, owner and link count of a path, which .NET does not expose: <c>statx</c> on Linux (one
 /// struct layout on every architecture), <c>stat</c> on macOS, attributes elsewhere.
 /// </summary>
 public static class FileStat
@@ -33,6 +33,12 @@ public static class FileStat
     public static (uint User, uint Group)? OwnerOf(string path) =>
         Query(path) is { } status ? (status.User, status.Group) : null;
 
+    /// <summary>
+    /// How many hard links (names) the file <paramref name="path"/> has, following symbolic links;
+    /// null where the platform does not say.
+    /// </summary>
+    public static uint? LinkCountOf(string path) => Query(path)?.Links;
+
     /// <summary>Gives <paramref name="path"/> the owner and group; false when the system refuses (only root may give files away).</summary>
     public static bool TryChangeOwner(string path, uint user, uint group)
     {
@@ -47,7 +53,7 @@ public static class FileStat
         }
     }
 
-    private readonly record struct Status(int Mode, uint User, uint Group);
+    private readonly record struct Status(int Mode, uint User, uint Group, uint Links);
 
     private static Status? Query(string path)
     {
@@ -63,15 +69,16 @@ public static class FileStat
         return null;
     }
 
-    // struct statx (linux/stat.h): stx_mask u32 @0, stx_uid u32 @20, stx_gid u32 @24, stx_mode u16 @28; 256 bytes in all.
+    // struct statx (linux/stat.h): stx_mask u32 @0, stx_nlink u32 @16, stx_uid u32 @20, stx_gid u32 @24, stx_mode u16 @28; 256 bytes in all.
     private static Status? QueryLinux(string path)
     {
         const int currentDirectory = -100; // AT_FDCWD
-        const uint wanted = 0x1 | 0x8 | 0x10; // STATX_TYPE | STATX_UID | STATX_GID
+        const uint wanted = 0x1 | 0x4 | 0x8 | 0x10; // STATX_TYPE | STATX_NLINK | STATX_UID | STATX_GID
         var buffer = new byte[256];
         if (StatX(currentDirectory, path, 0, wanted, buffer) != 0) return null;
         if ((MemoryMarshal.Read<uint>(buffer) & 0x1) == 0) return null;
-        return Read(buffer, modeAt: 28, userAt: 20, groupAt: 24);
+        var status = Read(buffer, modeAt: 28, userAt: 20, groupAt: 24);
+        return status with { Links = MemoryMarshal.Read<uint>(buffer.AsSpan(16)) };
     }
 
     // struct stat with 64-bit inodes (the only one on arm64, "stat$INODE64" on x64):
@@ -80,12 +87,12 @@ public static class FileStat
     {
         var buffer = new byte[512];
         var result = RuntimeInformation.ProcessArchitecture == Architecture.X64 ? MacStatX64(path, buffer) : MacStat(path, buffer);
-        return result != 0 ? null : Read(buffer, modeAt: 4, userAt: 16, groupAt: 20);
+        return result != 0 ? null : Read(buffer, modeAt: 4, userAt: 16, groupAt: 20) with { Links = MemoryMarshal.Read<ushort>(buffer.AsSpan(6)) };
     }
 
     // The kernel fills the struct in the machine's own byte order.
     private static Status Read(ReadOnlySpan<byte> b, int modeAt, int userAt, int groupAt) =>
-        new(MemoryMarshal.Read<ushort>(b[modeAt..]), MemoryMarshal.Read<uint>(b[userAt..]), MemoryMarshal.Read<uint>(b[groupAt..]));
+        new(MemoryMarshal.Read<ushort>(b[modeAt..]), MemoryMarshal.Read<uint>(b[userAt..]), MemoryMarshal.Read<uint>(b[groupAt..]), Links: 1);
 
     [DllImport("libc", EntryPoint = "statx", SetLastError = true)]
     private static extern int StatX(int directory, [MarshalAs(UnmanagedType.LPUTF8Str)] string path, int flags, uint mask, [Out] byte[] buffer);

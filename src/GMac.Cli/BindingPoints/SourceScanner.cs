@@ -5,7 +5,8 @@ namespace GMac.Cli.BindingPoints;
 
 /// <summary>
 /// The C# files under the given paths, skipping build output (<c>bin/</c>, <c>obj/</c>), hidden
-/// folders and special files, each file listed once however many links lead to it.
+/// folders and special files, each file listed once however many links lead to it. A file named
+/// on the command line is read only if it is a <c>.cs</c> file; any other is skipped with a warning.
 /// </summary>
 internal static class SourceScanner
 {
@@ -15,7 +16,7 @@ internal static class SourceScanner
         return (scan.Files, scan.Problems);
     }
 
-    /// <summary>The files, the paths that could not be scanned (errors) and the special files left out (warnings).</summary>
+    /// <summary>The files, the paths that could not be scanned (errors) and the files left out (warnings).</summary>
     public static SourceScan Scan(IReadOnlyList<string> paths)
     {
         var files = new SortedSet<string>(StringComparer.Ordinal);
@@ -39,6 +40,8 @@ internal static class SourceScanner
             if (File.Exists(path))
             {
                 if (SourceTree.WhyNotReadable(path) is { } why) skipped.Add(Skipped(path, why));
+                // as in a folder, only C# sources: 'gmac generate *' must not rewrite regions of a README
+                else if (!IsCSharpSource(path)) skipped.Add(Skipped(path, "not a C# source file (only .cs files are generated); skipped"));
                 else Add(path);
             }
             else if (Directory.Exists(path))
@@ -55,6 +58,8 @@ internal static class SourceScanner
         }
         return new SourceScan(files.ToList(), problems, skipped);
     }
+
+    private static bool IsCSharpSource(string path) => Path.GetExtension(path).Equals(".cs", StringComparison.OrdinalIgnoreCase);
 
     private static Diagnostic Skipped(string path, string reason) =>
         new(DiagnosticCodes.SkippedSourceFile, SourceSpan.None(Path.GetFullPath(path)), reason);

@@ -11,18 +11,18 @@ namespace GMac.Cli.Commands;
 /// </summary>
 internal sealed class DslOptions
 {
-    public Option<string[]> Sources { get; } = new("--dsl")
+    public Option<string[]> Sources { get; } = SharedOptions.NotBlank(new Option<string[]>("--dsl")
     {
         Description = "a GMacDSL folder (all its .gmac files) or one .gmac file; repeatable",
         HelpName = "DIR|FILE",
         Arity = ArgumentArity.ZeroOrMore,
-    };
+    }, "a folder or a .gmac file");
 
-    public Option<string?> ListFile { get; } = new("--dsl-from")
+    public Option<string?> ListFile { get; } = SharedOptions.NotBlank(new Option<string?>("--dsl-from")
     {
         Description = "a file listing GMacDSL folders or .gmac files, one a line (relative paths from the list's folder)",
         HelpName = "FILE",
-    };
+    }, "a file");
 
     public Option<bool> StandardLibrary { get; } = new("--standard-library")
     {

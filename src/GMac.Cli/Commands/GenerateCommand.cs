@@ -57,8 +57,12 @@ internal static class GenerateCommand
         return command;
     }
 
-    /// <summary>Generates with an already loaded DSL (what tests and the other commands share).</summary>
-    public static int Execute(GenerationContext context, IReadOnlyList<string> paths, bool check, bool stats, TextWriter output, TextWriter error, Stopwatch? watch = null)
+    /// <summary>
+    /// Generates with an already loaded DSL (what tests and the other commands share).
+    /// <paramref name="beforeWrite"/> runs just before each file is written, so tests can edit it then.
+    /// </summary>
+    public static int Execute(GenerationContext context, IReadOnlyList<string> paths, bool check, bool stats, TextWriter output, TextWriter error,
+        Stopwatch? watch = null, Action<string>? beforeWrite = null)
     {
         watch ??= Stopwatch.StartNew();
         var hitsBefore = context.Cas.TotalHits;
@@ -86,16 +90,18 @@ internal static class GenerateCommand
         // Files are generated on every core (the generator and its caches are shared and safe for
         // that; no region depends on another file), then reported and written one by one in the
         // order of the scan, so output and exit code do not depend on which thread finished first.
-        var generated = new (FileGeneration? Generation, string Errors)[pending.Count];
+        // Each file keeps the bytes it was generated from: it is written only if it still holds them.
+        var generated = new (FileGeneration? Generation, string Errors, byte[] Read)[pending.Count];
         Parallel.For(0, pending.Count, new ParallelOptions { MaxDegreeOfParallelism = Environment.ProcessorCount }, i =>
         {
             using var fileErrors = new StringWriter();
-            generated[i] = (GenerateFile(pending[i], context, generateStats, fileErrors), fileErrors.ToString());
+            var generation = GenerateFile(pending[i], context, generateStats, fileErrors, out var read);
+            generated[i] = (generation, fileErrors.ToString(), read);
         });
         for (var i = 0; i < pending.Count; i++)
         {
             var path = pending[i];
-            var (generation, fileErrors) = generated[i];
+            var (generation, fileErrors, read) = generated[i];
             generated[i] = default; // let the file's text go once it is handled
             error.Write(fileErrors);
             if (generation is null)
@@ -111,9 +117,11 @@ internal static class GenerateCommand
                 continue;
             }
             regions += generation.Regions.Count;
+            var first = generation.File.Points[0];
+            var firstRegion = SourceSpan.At(path, first.RegionLineNumber, first.RegionColumn);
             if (!generation.Changed)
             {
-                index.Record(path, generation.File.Source.Encode(generation.File.Source.Text));
+                index.Record(path, read);
                 continue;
             }
             if (check)
@@ -122,12 +130,12 @@ internal static class GenerateCommand
                 if (stale.Count == 0)
                 {
                     // every region is current, some with the header and some without
-                    index.Record(path, generation.File.Source.Encode(generation.File.Source.Text));
+                    index.Record(path, read);
                     continue;
                 }
                 outOfDate++;
                 foreach (var r in stale)
-                    error.WriteLine(new Diagnostic(DiagnosticCodes.OutOfDate, SourceSpan.At(path, r.Point.RegionLineNumber, 1), $"binding point '{r.Point.MacroName}' is out of date; run 'gmac generate'"));
+                    error.WriteLine(new Diagnostic(DiagnosticCodes.OutOfDate, SourceSpan.At(path, r.Point.RegionLineNumber, r.Point.RegionColumn), $"binding point '{r.Point.MacroName}' is out of date; run 'gmac generate'"));
                 continue;
             }
             byte[] newBytes;
@@ -137,13 +145,14 @@ internal static class GenerateCommand
             }
             catch (EncoderFallbackException e)
             {
-                error.WriteLine(new Diagnostic(DiagnosticCodes.CannotWrite, SourceSpan.At(path, generation.File.Points[0].RegionLineNumber, 1), $"cannot write the generated code in the file's encoding ({generation.File.Source.Encoding.WebName}): {e.Message}; the file is unchanged"));
+                error.WriteLine(new Diagnostic(DiagnosticCodes.CannotWrite, firstRegion, $"cannot write the generated code in the file's encoding ({generation.File.Source.Encoding.WebName}): {e.Message}; the file is unchanged"));
                 failed++;
                 continue;
             }
-            if (AtomicFile.TryWrite(path, newBytes) is { } why)
+            beforeWrite?.Invoke(path);
+            if (TryReplace(path, newBytes, read) is { } why)
             {
-                error.WriteLine(new Diagnostic(DiagnosticCodes.CannotWrite, SourceSpan.At(path, generation.File.Points[0].RegionLineNumber, 1), $"cannot write the generated code: {why}; the file is unchanged"));
+                error.WriteLine(new Diagnostic(DiagnosticCodes.CannotWrite, firstRegion, why));
                 failed++;
                 continue;
             }
@@ -159,6 +168,29 @@ internal static class GenerateCommand
         return failed > 0 || outOfDate > 0 ? ExitCodes.Diagnostics : ExitCodes.Success;
     }
 
+    /// <summary>
+    /// Writes the file if it still holds the bytes it was generated from; null on success, else
+    /// the message: an edit made during the run is kept, and a file deleted meanwhile stays deleted.
+    /// </summary>
+    private static string? TryReplace(string path, byte[] newBytes, byte[] read)
+    {
+        try
+        {
+            AtomicFile.Replace(path, newBytes, read);
+            return null;
+        }
+        catch (FileChangedException e)
+        {
+            return e.Deleted
+                ? "the file was deleted while gmac generated it; it is not created again"
+                : "the file was changed while gmac generated it; it is left as it is now (run 'gmac generate' again to generate it)";
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            return $"cannot write the generated code: {e.Message}; the file is unchanged";
+        }
+    }
+
     private static byte[]? TryReadBytes(string path)
     {
         try
@@ -172,12 +204,18 @@ internal static class GenerateCommand
     }
 
     /// <summary>Reads and generates one file; null (with a diagnostic) when it cannot be read.</summary>
-    internal static FileGeneration? GenerateFile(string path, GenerationContext context, bool stats, TextWriter error)
+    internal static FileGeneration? GenerateFile(string path, GenerationContext context, bool stats, TextWriter error) =>
+        GenerateFile(path, context, stats, error, out _);
+
+    /// <summary>Reads and generates one file, giving the bytes it read (empty when it could not read them).</summary>
+    private static FileGeneration? GenerateFile(string path, GenerationContext context, bool stats, TextWriter error, out byte[] read)
     {
         SourceText source;
+        read = [];
         try
         {
-            source = SourceText.Read(path);
+            read = File.ReadAllBytes(path);
+            source = SourceText.Decode(path, read);
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {

@@ -5,11 +5,11 @@ namespace GMac.Cli.Commands;
 /// <summary>The options every command that loads a GMacDSL folder takes, made fresh for each command.</summary>
 internal static class SharedOptions
 {
-    public static Option<string?> Cache() => new("--cache")
+    public static Option<string?> Cache() => NotBlank(new Option<string?>("--cache")
     {
         Description = "where simplifier answers are cached (default: .gmac-cache in the first --dsl folder, or beside the first --dsl file)",
         HelpName = "DIR",
-    };
+    });
 
     public static Option<bool> Stats(string what) => new("--stats") { Description = what };
 
@@ -41,11 +41,34 @@ internal static class SharedOptions
     }
 
     /// <summary>The C# files or folders to work on; none means the current folder.</summary>
-    public static Argument<string[]> Paths(string what) => new("PATH")
+    public static Argument<string[]> Paths(string what)
     {
-        Description = what + " (default: .)",
-        Arity = ArgumentArity.ZeroOrMore,
-    };
+        var paths = new Argument<string[]>("PATH")
+        {
+            Description = what + " (default: .)",
+            Arity = ArgumentArity.ZeroOrMore,
+        };
+        paths.Validators.Add(result =>
+        {
+            if (result.Tokens.Any(t => string.IsNullOrWhiteSpace(t.Value)))
+                result.AddError("A PATH is empty: name a C# file or folder (or none, for the current folder).");
+        });
+        return paths;
+    }
+
+    /// <summary>
+    /// An empty or blank value (<c>--cache ""</c>, from an unset variable, say) is a usage error,
+    /// not a path: it would name no file, or the current folder by accident.
+    /// </summary>
+    public static Option<T> NotBlank<T>(Option<T> option, string what = "a folder")
+    {
+        option.Validators.Add(result =>
+        {
+            if (result.Tokens.Any(t => string.IsNullOrWhiteSpace(t.Value)))
+                result.AddError($"The value of '{option.Name}' is empty: it must name {what}.");
+        });
+        return option;
+    }
 
     public static IReadOnlyList<string> PathsOrCurrent(string[]? paths) => paths is { Length: > 0 } ? paths : ["."];
 }

@@ -70,12 +70,12 @@ public static class DiagnosticCodes
     public static readonly DiagnosticDescriptor NestedRegion = new("GMAC0403", Error, "a region is nested inside a GMac region", ReportedBy.SourceFiles);
     public static readonly DiagnosticDescriptor InvalidBindingLine = new("GMAC0404", Error, "a //GMac. line cannot be read", ReportedBy.SourceFiles);
     public static readonly DiagnosticDescriptor TargetNotAssignable = new("GMAC0405", Error, "the C# target of an output cannot be assigned", ReportedBy.Generation);
-    public static readonly DiagnosticDescriptor CannotWrite = new("GMAC0406", Error, "the generated code cannot be written; the file is unchanged", ReportedBy.Generate | ReportedBy.Build);
+    public static readonly DiagnosticDescriptor CannotWrite = new("GMAC0406", Error, "the generated code cannot be written, or the file changed during the run; it is left as it is", ReportedBy.Generate | ReportedBy.Build);
     public static readonly DiagnosticDescriptor CannotReadSource = new("GMAC0407", Error, "a path does not exist or a C# file cannot be read", ReportedBy.SourceFiles);
     public static readonly DiagnosticDescriptor InvalidMacroName = new("GMAC0408", Error, "'#region GMac :' is not followed by a macro name", ReportedBy.SourceFiles);
     public static readonly DiagnosticDescriptor InternalError = new("GMAC0409", Error, "a defect of gmac while generating or printing one binding point", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor OutOfDate = new("GMAC0410", Error, "with --check: a binding point differs from what gmac generates", ReportedBy.Generate);
-    public static readonly DiagnosticDescriptor SkippedSourceFile = new("GMAC0411", Warning, "a special file (device, pipe, socket) among the C# paths is skipped", ReportedBy.Generate | ReportedBy.Build);
+    public static readonly DiagnosticDescriptor SkippedSourceFile = new("GMAC0411", Warning, "a special file (device, pipe, socket) or a named file that is not a .cs file is skipped", ReportedBy.Generate | ReportedBy.Build);
     public static readonly DiagnosticDescriptor NotAnExpression = new("GMAC0412", Error, "the C# text of a binding is not exactly one C# expression", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor InvalidScalarType = new("GMAC0413", Error, "a GMac.Type line names a scalar type other than float or double, or is given twice", ReportedBy.SourceFiles);
     public static readonly DiagnosticDescriptor DisagreesWithEngine = new("GMAC0420", Error, "the generated code disagrees with the numeric engine", ReportedBy.Verify);

@@ -43,7 +43,7 @@ public sealed class Generate_CheckWithStats : IDisposable
         var (exit, _, err) = Tool.Generate([_temp.Path], check: true, stats: checkStats);
 
         Assert.Equal(1, exit);
-        Assert.Matches(@"Normals\.cs\(8,1\): error GMAC0410", err);
+        Assert.Matches(@"Normals\.cs\(8,9\): error GMAC0410", err);
         Assert.Equal(StaleKernel.Text, File.ReadAllText(path));
     }
 

@@ -137,7 +137,7 @@ public sealed class Generate_Faults : IDisposable
         var (exit, _, err) = Tool.Generate([_temp.Path]);
 
         Assert.Equal(1, exit);
-        Assert.Matches(@"Faulty\.cs\(7,1\): error GMAC0406: cannot write the generated code: the file is read-only", err);
+        Assert.Matches(@"Faulty\.cs\(7,9\): error GMAC0406: cannot write the generated code: the file is read-only", err);
         Assert.Equal(before, File.ReadAllBytes(path));
     }
 

@@ -6,8 +6,8 @@ using SafeFiles;
 namespace GMac.Cli.Tests.BindingPoints;
 
 /// <summary>
-/// A rewritten file is the same file as before in every way but its content: links stay links,
-/// permissions and owner are kept, and no temporary file of an earlier run gets in the way.
+/// A rewritten file is the same file as before in every way but its content: links stay links
+/// (hard links too), permissions, owner and extended attributes are kept, and no temporary file of an earlier run gets in the way.
 /// </summary>
 [Collection(SharedDslCollection.Name)]
 public sealed class Generate_FileSafety : IDisposable
@@ -91,8 +91,41 @@ public sealed class Generate_FileSafety : IDisposable
         var (exit, _, err) = Tool.Generate([Code]);
 
         Assert.Equal(1, exit);
-        Assert.Matches(@"ReadOnly\.cs\(8,1\): error GMAC0406: cannot write the generated code: the file is read-only", err);
+        Assert.Matches(@"ReadOnly\.cs\(8,9\): error GMAC0406: cannot write the generated code: the file is read-only", err);
         Assert.Equal(StaleKernel.Text, File.ReadAllText(path));
+    }
+
+    [UnsupportedOSPlatform("windows")]
+    [UnixFact]
+    public void A_file_with_two_hard_links_gets_the_code_under_both_names()
+    {
+        var path = _temp.Write("code/Normals.cs", StaleKernel.Text);
+        // the other name lies outside the generated folder, as a shared file linked into a project would
+        var other = Path.Combine(_temp.Path, "Shared.cs");
+        HardLink.Create(path, other);
+
+        var (exit, _, err) = Tool.Generate([Code]);
+
+        Assert.True(exit == 0, err);
+        AssertGenerated(path);
+        Assert.Equal(File.ReadAllBytes(path), File.ReadAllBytes(other));
+        Assert.Equal(2u, FileStat.LinkCountOf(path));
+        Assert.Empty(Directory.GetFiles(_temp.Path, ".*" + AtomicFile.TempSuffix, SearchOption.AllDirectories));
+    }
+
+    [UnsupportedOSPlatform("windows")]
+    [UnixFact(userAttributes: true)]
+    public void Extended_attributes_are_kept()
+    {
+        var path = _temp.Write("code/Normals.cs", StaleKernel.Text);
+        var value = "reviewed by Ada"u8.ToArray();
+        Assert.Null(ExtendedAttributes.TrySet(path, "user.gmac.test", value));
+
+        var (exit, _, err) = Tool.Generate([Code]);
+
+        Assert.True(exit == 0, err);
+        AssertGenerated(path);
+        Assert.Equal(value, ExtendedAttributes.Get(path, "user.gmac.test"));
     }
 
     [Fact]

@@ -167,7 +167,7 @@ public sealed class Generate_Rewrites : IDisposable
         var (exit, _, err) = Tool.Generate([code], check: true, context: edited);
 
         Assert.Equal(1, exit);
-        Assert.Matches(@"Normals\.cs\(8,1\): error GMAC0410: binding point 'GetNormalToVectors' is out of date", err);
+        Assert.Matches(@"Normals\.cs\(8,9\): error GMAC0410: binding point 'GetNormalToVectors' is out of date", err);
         Assert.Equal(generated, File.ReadAllBytes(path));
     }
 

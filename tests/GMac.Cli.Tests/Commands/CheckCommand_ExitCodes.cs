@@ -36,6 +36,20 @@ public sealed class CheckCommand_ExitCodes : IDisposable
     }
 
     [Fact]
+    public void A_gmac_file_is_read_alone_and_any_other_file_is_called_a_file()
+    {
+        var frames = Path.Combine(DslLibrary, "frames.gmac");
+        var (exit, output, _) = Run("check", "--dsl", frames);
+        Assert.Equal(0, exit);
+        Assert.StartsWith("1 file(s)", output, StringComparison.Ordinal);
+
+        var readme = Path.Combine(DslLibrary, "README.md");
+        (exit, _, var err) = Run("check", "--dsl", readme);
+        Assert.Equal(1, exit);
+        Assert.Contains($"{readme}(1,1): error GMAC0003: '{readme}' is a file, not a DSL folder or a .gmac file: name the folder that holds the .gmac files (here '{DslLibrary}')", err);
+    }
+
+    [Fact]
     public void Errors_go_to_stderr_in_msbuild_format_with_exit_1()
     {
         File.WriteAllText(Path.Combine(_temp, "bad.gmac"), "define frame a as basis: {x} Euclidean end frame\ndefine frame a as basis: {x} Euclidean end frame\n");

@@ -88,6 +88,30 @@ public sealed class CommandLine_Syntax
         Assert.Equal("", output);
     }
 
+    /// <summary>FILE and DSL stand for a stale C# file and the DSL folder.</summary>
+    [Theory]
+    [InlineData("'--cache'", "generate", "FILE", "--dsl", "DSL", "--cache", "")]
+    [InlineData("'--cache'", "verify", "FILE", "--dsl", "DSL", "--cache", " ")]
+    [InlineData("'--cache'", "show", "NormalToVectors", "--dsl", "DSL", "--cache", "")]
+    [InlineData("'--dsl'", "generate", "FILE", "--dsl", "")]
+    [InlineData("'--dsl'", "check", "--dsl", "")]
+    [InlineData("PATH", "generate", "", "--dsl", "DSL")]
+    [InlineData("PATH", "generate", "FILE", " ", "--dsl", "DSL")]
+    public void An_empty_value_exits_2_naming_it_before_any_file_is_touched(string named, params string[] args)
+    {
+        using var temp = new TempFolder();
+        var file = temp.Write("Normals.cs", StaleKernel.Text);
+        args = [.. args.Select(a => a switch { "FILE" => file, "DSL" => SharedDsl.DslDirectory, _ => a })];
+
+        var (exit, output, err) = Tool.Run(args);
+
+        Assert.Equal(2, exit);
+        Assert.Matches($"{System.Text.RegularExpressions.Regex.Escape(named)}[^\n]* empty", err);
+        Assert.DoesNotContain(": error", err);
+        Assert.Equal("", output);
+        Assert.Equal(StaleKernel.Text, File.ReadAllText(file));
+    }
+
     [Theory]
     [InlineData("--bind", "nonsense")]
     [InlineData("--bind", "u.=x")]
