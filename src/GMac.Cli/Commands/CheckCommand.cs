@@ -16,13 +16,12 @@ internal static class CheckCommand
         var timing = new Option<bool>("--timing") { Description = "also print the warm parse+bind time (median of 20 runs)" };
         var command = new Command("check", "Parse and bind a GMacDSL folder and print its diagnostics.") { timing };
         dsl.AddTo(command);
-        command.SetAction(r => Run(dsl.Resolve(r, r.InvocationConfiguration.Error), r.GetValue(timing), r.InvocationConfiguration.Output, r.InvocationConfiguration.Error));
+        command.SetAction(r => dsl.Resolve(r, r.InvocationConfiguration.Error, out var failure) is not { } sources ? failure : Run(sources, r.GetValue(timing), r.InvocationConfiguration.Output, r.InvocationConfiguration.Error));
         return command;
     }
 
-    private static int Run(IReadOnlyList<string>? dsl, bool timing, TextWriter output, TextWriter error)
+    private static int Run(IReadOnlyList<string> dsl, bool timing, TextWriter output, TextWriter error)
     {
-        if (dsl is null) return ExitCodes.Diagnostics;
         DslProject project;
         try
         {

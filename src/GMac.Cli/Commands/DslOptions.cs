@@ -1,4 +1,5 @@
 using System.CommandLine;
+using System.CommandLine.Parsing;
 using GMac.Cli.BindingPoints;
 
 namespace GMac.Cli.Commands;
@@ -15,7 +16,7 @@ internal sealed class DslOptions
     {
         Description = "a GMacDSL folder (all its .gmac files) or one .gmac file; repeatable",
         HelpName = "DIR|FILE",
-        Arity = ArgumentArity.ZeroOrMore,
+        Arity = ArgumentArity.OneOrMore,
     }, "a folder or a .gmac file");
 
     public Option<string?> ListFile { get; } = SharedOptions.NotBlank(new Option<string?>("--dsl-from")
@@ -29,7 +30,6 @@ internal sealed class DslOptions
         Description = "also load the GMacDSL library shipped with gmac (frames e2d, e3d, cga5d, pga, their classes and macros)",
     };
 
-    /// <summary>Adds the options to <paramref name="command"/>, with the rule that the DSL is given somehow.</summary>
     public void AddTo(Command command)
     {
         command.Options.Add(Sources);
@@ -37,18 +37,30 @@ internal sealed class DslOptions
         command.Options.Add(StandardLibrary);
         command.Validators.Add(result =>
         {
-            if (result.GetValue(Sources) is not { Length: > 0 } && result.GetValue(ListFile) is null && !result.GetValue(StandardLibrary))
-                result.AddError("no GMacDSL given: use --dsl DIR|FILE, --dsl-from FILE or --standard-library");
+            // A '--' token taken as a PATH or MACRO is a mistyped option, reported with a suggestion
+            // by UnknownOptions; this error would hide it. GetResult, not GetValue: a bare '--dsl'
+            // without a value is already the parser's error.
+            if (result.Tokens.Any(t => t.Type == TokenType.Argument && t.Value.StartsWith("--", StringComparison.Ordinal))) return;
+            if (result.GetResult(Sources) is null && result.GetResult(ListFile) is null && !result.GetValue(StandardLibrary))
+                result.AddError("Option '--dsl' is required (or '--dsl-from', or '--standard-library'): the GMacDSL folders or .gmac files to load.");
         });
     }
 
-    /// <summary>The folders and files to load, in the order given; null (with a diagnostic) when the list cannot be read.</summary>
-    public IReadOnlyList<string>? Resolve(ParseResult result, TextWriter error)
+    /// <summary>
+    /// The folders and files to load, in the order given; null (exit code 1, with a diagnostic)
+    /// when the list cannot be read.
+    /// </summary>
+    public IReadOnlyList<string>? Resolve(ParseResult result, TextWriter error, out int exitCode)
     {
+        exitCode = ExitCodes.Success;
         var sources = new List<string>(result.GetValue(Sources) ?? []);
         if (result.GetValue(ListFile) is { } list)
         {
-            if (SourceList.Read(list, error, "GMacDSL folders and files") is not { } listed) return null;
+            if (SourceList.Read(list, error, "GMacDSL folders and files") is not { } listed)
+            {
+                exitCode = ExitCodes.Diagnostics;
+                return null;
+            }
             sources.AddRange(listed);
         }
         if (result.GetValue(StandardLibrary)) sources.Add(StandardLibraryDirectory);

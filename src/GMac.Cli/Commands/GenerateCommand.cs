@@ -48,7 +48,7 @@ internal static class GenerateCommand
                 if (SourceList.Read(list, error) is not { } listed) return ExitCodes.Diagnostics;
                 sources = [.. r.GetValue(paths) ?? [], .. listed];
             }
-            if (dsl.Resolve(r, error) is not { } dslSources) return ExitCodes.Diagnostics;
+            if (dsl.Resolve(r, error, out var failure) is not { } dslSources) return failure;
             var context = DslLoader.Load(dslSources, r.GetValue(cache), error);
             if (context is null) return ExitCodes.Diagnostics;
             context.DefaultScalarType = r.GetValue(scalar)!;

@@ -38,7 +38,7 @@ internal static class ShowCommand
         command.Options.Add(stats);
         command.Options.Add(cache);
         command.Options.Add(scalar);
-        command.SetAction(r => Run(r.GetValue(macro)!, dsl.Resolve(r, r.InvocationConfiguration.Error), r.GetValue(cache), SpecsInOrder(r, specOptions), r.GetValue(stats),
+        command.SetAction(r => dsl.Resolve(r, r.InvocationConfiguration.Error, out var failure) is not { } sources ? failure : Run(r.GetValue(macro)!, sources, r.GetValue(cache), SpecsInOrder(r, specOptions), r.GetValue(stats),
             r.GetValue(scalar)!, r.InvocationConfiguration.Output, r.InvocationConfiguration.Error));
         return command;
     }
@@ -68,12 +68,11 @@ internal static class ShowCommand
         return values;
     }
 
-    private static int Run(string macro, IReadOnlyList<string>? dsl, string? cache, List<(string Option, string Value)> values, bool stats, string scalarType,
+    private static int Run(string macro, IReadOnlyList<string> dsl, string? cache, List<(string Option, string Value)> values, bool stats, string scalarType,
         TextWriter output, TextWriter error)
     {
         // Every value was checked by the option's validator.
         var specs = values.Select((v, i) => ParseSpec(v.Option, v.Value, i + 1)!).ToList();
-        if (dsl is null) return ExitCodes.Diagnostics;
         var context = DslLoader.Load(dsl, cache, error);
         if (context is null) return ExitCodes.Diagnostics;
         // Default bindings get line 0 so their errors are not blamed on a --bind option.

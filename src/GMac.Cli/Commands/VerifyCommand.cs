@@ -26,7 +26,7 @@ internal static class VerifyCommand
         command.SetAction(r =>
         {
             var error = r.InvocationConfiguration.Error;
-            if (dsl.Resolve(r, error) is not { } sources) return ExitCodes.Diagnostics;
+            if (dsl.Resolve(r, error, out var failure) is not { } sources) return failure;
             var context = DslLoader.Load(sources, r.GetValue(cache), error);
             if (context is null) return ExitCodes.Diagnostics;
             context.DefaultScalarType = r.GetValue(scalar)!;
