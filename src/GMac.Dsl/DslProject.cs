@@ -28,26 +28,44 @@ public sealed class DslProject
     /// <summary>Wall time of parsing and binding, without reading the files.</summary>
     public TimeSpan ParseAndBindTime { get; }
 
-    public static DslProject Load(string directory)
+    /// <summary>Every <c>*.gmac</c> file under <paramref name="directory"/>.</summary>
+    public static DslProject Load(string directory) => Load([directory]);
+
+    /// <summary>
+    /// The <c>*.gmac</c> files of several sources bound as one project: each source is a folder
+    /// (all its <c>*.gmac</c> files, recursively) or one file. A file reached twice (the same
+    /// file named again, or under two folders given) is read once.
+    /// </summary>
+    public static DslProject Load(IReadOnlyList<string> sources)
     {
         var files = new List<(string Path, string Text)>();
         var bag = new DiagnosticBag();
-        if (!Directory.Exists(directory))
+        var paths = new List<string>();
+        var seen = new HashSet<string>(StringComparer.Ordinal);
+        foreach (var source in sources)
         {
-            var message = File.Exists(directory)
-                ? $"'{directory}' is a file, not a DSL folder: name the folder that holds the .gmac files (here '{Path.GetDirectoryName(Path.GetFullPath(directory))}')"
-                : $"DSL folder '{directory}' does not exist";
-            bag.ReportCannotRead(SourceSpan.None(directory), message);
-            return FromSources(files, bag.Items);
+            if (File.Exists(source))
+            {
+                if (!source.EndsWith(".gmac", StringComparison.OrdinalIgnoreCase))
+                    bag.ReportCannotRead(SourceSpan.None(source), $"'{source}' is a file, not a DSL folder or a .gmac file: name the folder that holds the .gmac files (here '{Path.GetDirectoryName(Path.GetFullPath(source))}') or the .gmac files themselves");
+                else if (SourceTree.WhyNotReadable(source) is { } why) bag.ReportCannotRead(SourceSpan.None(source), why);
+                else if (seen.Add(RealPath.Of(source))) paths.Add(source);
+                continue;
+            }
+            if (!Directory.Exists(source))
+            {
+                bag.ReportCannotRead(SourceSpan.None(source), $"DSL folder or file '{source}' does not exist");
+                continue;
+            }
+            var listing = SourceTree.List(source, "*.gmac");
+            foreach (var skipped in listing.Skipped)
+            {
+                if (skipped.IsError) bag.ReportCannotRead(SourceSpan.None(skipped.Path), skipped.Reason);
+                else bag.ReportSkippedFile(SourceSpan.None(skipped.Path), skipped.Reason);
+            }
+            if (listing.Files.Count == 0) bag.ReportCannotRead(SourceSpan.None(source), $"no *.gmac files in '{source}'");
+            paths.AddRange(listing.Files.Where(f => seen.Add(RealPath.Of(f))));
         }
-        var listing = SourceTree.List(directory, "*.gmac");
-        foreach (var skipped in listing.Skipped)
-        {
-            if (skipped.IsError) bag.ReportCannotRead(SourceSpan.None(skipped.Path), skipped.Reason);
-            else bag.ReportSkippedFile(SourceSpan.None(skipped.Path), skipped.Reason);
-        }
-        var paths = listing.Files;
-        if (paths.Count == 0) bag.ReportCannotRead(SourceSpan.None(directory), $"no *.gmac files in '{directory}'");
         foreach (var path in paths)
         {
             try

@@ -11,7 +11,7 @@ namespace GMac.Cli.BindingPoints;
 internal static class SourceList
 {
     /// <summary>The listed paths, made absolute; null (with a diagnostic) when the list cannot be read.</summary>
-    public static IReadOnlyList<string>? Read(string listFile, TextWriter error)
+    public static IReadOnlyList<string>? Read(string listFile, TextWriter error, string what = "source files")
     {
         var full = Path.GetFullPath(listFile);
         string[] lines;
@@ -23,7 +23,7 @@ internal static class SourceList
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
-            error.WriteLine(new Diagnostic(DiagnosticCodes.CannotReadSource, SourceSpan.None(full), $"cannot read the list of source files: {e.Message}"));
+            error.WriteLine(new Diagnostic(DiagnosticCodes.CannotReadSource, SourceSpan.None(full), $"cannot read the list of {what}: {e.Message}"));
             return null;
         }
         var folder = Path.GetDirectoryName(full)!;

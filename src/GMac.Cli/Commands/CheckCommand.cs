@@ -5,21 +5,22 @@ using GMac.Dsl;
 namespace GMac.Cli.Commands;
 
 /// <summary>
-/// <c>gmac check --dsl DIR [--timing]</c>: parses and binds a GMacDSL folder and
+/// <c>gmac check --dsl DIR|FILE… [--timing]</c>: parses and binds a GMacDSL folder and
 /// prints its diagnostics (MSBuild format) on standard error.
 /// </summary>
 internal static class CheckCommand
 {
     public static Command Create()
     {
-        var dsl = SharedOptions.Dsl();
+        var dsl = new DslOptions();
         var timing = new Option<bool>("--timing") { Description = "also print the warm parse+bind time (median of 20 runs)" };
-        var command = new Command("check", "Parse and bind a GMacDSL folder and print its diagnostics.") { dsl, timing };
-        command.SetAction(r => Run(r.GetValue(dsl)!, r.GetValue(timing), r.InvocationConfiguration.Output, r.InvocationConfiguration.Error));
+        var command = new Command("check", "Parse and bind a GMacDSL folder and print its diagnostics.") { timing };
+        dsl.AddTo(command);
+        command.SetAction(r => dsl.Resolve(r, r.InvocationConfiguration.Error, out var failure) is not { } sources ? failure : Run(sources, r.GetValue(timing), r.InvocationConfiguration.Output, r.InvocationConfiguration.Error));
         return command;
     }
 
-    private static int Run(string dsl, bool timing, TextWriter output, TextWriter error)
+    private static int Run(IReadOnlyList<string> dsl, bool timing, TextWriter output, TextWriter error)
     {
         DslProject project;
         try
@@ -29,7 +30,7 @@ internal static class CheckCommand
         catch (Exception e) when (e is not OutOfMemoryException)
         {
             // A defect of the checker itself: still a message and an exit code, not a stack trace.
-            error.WriteLine($"gmac check: internal error while checking '{dsl}': {e.Message}");
+            error.WriteLine($"gmac check: internal error while checking '{string.Join("', '", dsl)}': {e.Message}");
             return ExitCodes.Diagnostics;
         }
         foreach (var diagnostic in project.Diagnostics) error.WriteLine(diagnostic);
@@ -38,7 +39,7 @@ internal static class CheckCommand
         output.WriteLine($"{project.SyntaxTrees.Count} file(s), {project.Model.Macros.Count} macro(s): {errors} error(s), {warnings} warning(s)");
         if (timing)
         {
-            var warm = DslTiming.MeasureWarm(dsl, repetitions: 20);
+            var warm = DslTiming.MeasureWarm(project, repetitions: 20);
             output.WriteLine(string.Create(CultureInfo.InvariantCulture,
                 $"parse+bind (warm, median of 20): {warm.TotalMilliseconds:F1} ms"));
         }

@@ -10,7 +10,7 @@ using SafeFiles;
 namespace GMac.Cli.Commands;
 
 /// <summary>
-/// <c>gmac generate [PATH…] [--sources-from FILE] --dsl DIR [--check] [--stats] [--cache DIR] [--scalar float|double]</c>:
+/// <c>gmac generate [PATH…] [--sources-from FILE] --dsl DIR|FILE… [--dsl-from FILE] [--standard-library] [--check] [--stats] [--cache DIR] [--scalar float|double]</c>:
 /// rewrites every binding point under the paths and in the listed files; with <c>--check</c> only
 /// reports files that are out of date.
 /// </summary>
@@ -28,12 +28,13 @@ internal static class GenerateCommand
         {
             if (result.Tokens.Any(t => string.IsNullOrWhiteSpace(t.Value))) result.AddError("--sources-from needs the path of a file listing C# files");
         });
-        var dsl = SharedOptions.Dsl();
+        var dsl = new DslOptions();
         var check = new Option<bool>("--check") { Description = "write nothing; exit 1 if any region is out of date" };
         var stats = SharedOptions.Stats("begin each region with a comment counting its operations");
         var cache = SharedOptions.Cache();
         var scalar = SharedOptions.Scalar("the scalar type of the code where a binding point has no //GMac.Type line (default: double)");
-        var command = new Command("generate", "Rewrite the binding points (#region GMac blocks) of C# files.") { paths, sourcesFrom, dsl, check, stats, cache, scalar };
+        var command = new Command("generate", "Rewrite the binding points (#region GMac blocks) of C# files.") { paths, sourcesFrom, check, stats, cache, scalar };
+        dsl.AddTo(command);
         UnknownOptions.RejectIn(paths, command);
         command.SetAction(r =>
         {
@@ -47,7 +48,8 @@ internal static class GenerateCommand
                 if (SourceList.Read(list, error) is not { } listed) return ExitCodes.Diagnostics;
                 sources = [.. r.GetValue(paths) ?? [], .. listed];
             }
-            var context = DslLoader.Load(r.GetValue(dsl)!, r.GetValue(cache), error);
+            if (dsl.Resolve(r, error, out var failure) is not { } dslSources) return failure;
+            var context = DslLoader.Load(dslSources, r.GetValue(cache), error);
             if (context is null) return ExitCodes.Diagnostics;
             context.DefaultScalarType = r.GetValue(scalar)!;
             return Execute(context, sources, r.GetValue(check), r.GetValue(stats), r.InvocationConfiguration.Output, error, watch);

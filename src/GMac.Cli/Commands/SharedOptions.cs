@@ -5,16 +5,9 @@ namespace GMac.Cli.Commands;
 /// <summary>The options every command that loads a GMacDSL folder takes, made fresh for each command.</summary>
 internal static class SharedOptions
 {
-    public static Option<string> Dsl() => NotBlank(new Option<string>("--dsl")
-    {
-        Description = "the GMacDSL folder (its .gmac files)",
-        HelpName = "DIR",
-        Required = true,
-    });
-
     public static Option<string?> Cache() => NotBlank(new Option<string?>("--cache")
     {
-        Description = "where simplifier answers are cached (default: DIR/.gmac-cache)",
+        Description = "where simplifier answers are cached (default: .gmac-cache in the first --dsl folder, or beside the first --dsl file)",
         HelpName = "DIR",
     });
 
@@ -67,12 +60,12 @@ internal static class SharedOptions
     /// An empty or blank value (<c>--cache ""</c>, from an unset variable, say) is a usage error,
     /// not a path: it would name no file, or the current folder by accident.
     /// </summary>
-    private static Option<T> NotBlank<T>(Option<T> option)
+    public static Option<T> NotBlank<T>(Option<T> option, string what = "a folder")
     {
         option.Validators.Add(result =>
         {
             if (result.Tokens.Any(t => string.IsNullOrWhiteSpace(t.Value)))
-                result.AddError($"The value of '{option.Name}' is empty: it must name a folder.");
+                result.AddError($"The value of '{option.Name}' is empty: it must name {what}.");
         });
         return option;
     }

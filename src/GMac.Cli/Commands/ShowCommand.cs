@@ -9,7 +9,7 @@ using GMac.Dsl.Generation;
 namespace GMac.Cli.Commands;
 
 /// <summary>
-/// <c>gmac show MACRO --dsl DIR [--bind …] [--min EXPR=V] [--max EXPR=V] [--stats] [--scalar float|double]</c>:
+/// <c>gmac show MACRO --dsl DIR|FILE… [--bind …] [--min EXPR=V] [--max EXPR=V] [--stats] [--scalar float|double]</c>:
 /// prints the code generated for one macro, with default bindings (<c>u_e1</c>, <c>w_e1</c>, …) unless
 /// given; when only inputs are bound, the outputs get the default names.
 /// </summary>
@@ -18,7 +18,7 @@ internal static class ShowCommand
     public static Command Create()
     {
         var macro = new Argument<string>("MACRO") { Description = "the macro whose code is printed" };
-        var dsl = SharedOptions.Dsl();
+        var dsl = new DslOptions();
         Option<string[]>[] specOptions =
         [
             SpecOption("--bind", "NAME=EXPR",
@@ -31,13 +31,14 @@ internal static class ShowCommand
         var stats = SharedOptions.Stats("begin the code with a comment counting its operations");
         var cache = SharedOptions.Cache();
         var scalar = SharedOptions.Scalar("the scalar type of the printed code (default: double)");
-        var command = new Command("show", "Print the code generated for one macro.") { macro, dsl };
+        var command = new Command("show", "Print the code generated for one macro.") { macro };
+        dsl.AddTo(command);
         UnknownOptions.RejectIn(macro, command);
         foreach (var option in specOptions) command.Options.Add(option);
         command.Options.Add(stats);
         command.Options.Add(cache);
         command.Options.Add(scalar);
-        command.SetAction(r => Run(r.GetValue(macro)!, r.GetValue(dsl)!, r.GetValue(cache), SpecsInOrder(r, specOptions), r.GetValue(stats),
+        command.SetAction(r => dsl.Resolve(r, r.InvocationConfiguration.Error, out var failure) is not { } sources ? failure : Run(r.GetValue(macro)!, sources, r.GetValue(cache), SpecsInOrder(r, specOptions), r.GetValue(stats),
             r.GetValue(scalar)!, r.InvocationConfiguration.Output, r.InvocationConfiguration.Error));
         return command;
     }
@@ -67,7 +68,7 @@ internal static class ShowCommand
         return values;
     }
 
-    private static int Run(string macro, string dsl, string? cache, List<(string Option, string Value)> values, bool stats, string scalarType,
+    private static int Run(string macro, IReadOnlyList<string> dsl, string? cache, List<(string Option, string Value)> values, bool stats, string scalarType,
         TextWriter output, TextWriter error)
     {
         // Every value was checked by the option's validator.
@@ -81,7 +82,7 @@ internal static class ShowCommand
         // declaration (or the DSL folder for an unknown macro); --bind options are quoted.
         var macroAt = context.Project.Model.Macros.TryGetValue(macro, out var symbol)
             ? symbol.Declaration
-            : SourceSpan.None(dsl);
+            : SourceSpan.None(dsl[0]);
         GenerationOutcome outcome;
         try
         {

@@ -1,7 +1,7 @@
 namespace GMac.Cli.Tests.Build;
 
 /// <summary>
-/// build/GMac.targets generates exactly the project's <c>Compile</c> items, not the files of its
+/// build/GMac.Build.targets generates exactly the project's <c>Compile</c> items, not the files of its
 /// folder: a file linked from outside the folder is generated, and a file of the folder that the
 /// project removes from <c>Compile</c> is left alone, even if its binding point is broken.
 /// </summary>

@@ -1,7 +1,7 @@
 namespace GMac.Cli.Tests.Build;
 
 /// <summary>
-/// The GMacScalar property of build/GMac.targets on a real <c>dotnet build</c>: float code for a
+/// The GMacScalar property of build/GMac.Build.targets on a real <c>dotnet build</c>: float code for a
 /// project that asks for it (in any case: <c>Float</c>), double again when the property changes
 /// (the change alone must regenerate), and a clear build error for any other value or for a
 /// command line that gmac refuses.

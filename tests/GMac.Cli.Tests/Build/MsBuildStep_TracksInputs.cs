@@ -3,7 +3,7 @@ using System.Text.RegularExpressions;
 namespace GMac.Cli.Tests.Build;
 
 /// <summary>
-/// build/GMac.targets on a real <c>dotnet build</c> of a small project: it rewrites a stale region,
+/// build/GMac.Build.targets on a real <c>dotnet build</c> of a small project: it rewrites a stale region,
 /// turns a bad binding point into a build error at its line, skips generation when nothing changed,
 /// and notices a deleted DSL file (timestamps alone cannot: every remaining input is older than the stamp).
 /// </summary>

@@ -3,8 +3,10 @@ using GMac.Cli.Tests.Support;
 namespace GMac.Cli.Tests.Build;
 
 /// <summary>
-/// A small project in a folder <c>Sample/</c> of a temporary folder that imports the repository's
-/// build/GMac.targets, with one C# file holding a binding point and a two-file DSL: the frame, and
+/// A small project in a folder <c>Sample/</c> of a temporary folder that imports the props and
+/// targets the GMac.Build package ships (build/GMac.Build.*) and runs the gmac tool built next to
+/// the tests (<c>GMacToolPath</c>), with one C# file holding a binding point and a DSL of its own
+/// (its <c>.gmac</c> files found by the default glob, the standard library off): the frame, and
 /// the macros it uses (<c>Sum</c>, and <c>Third</c>, whose constant shows the scalar type of the code).
 /// Other files, also beside the project folder, are added with <see cref="Write"/>.
 /// </summary>
@@ -16,23 +18,25 @@ internal sealed class SampleProject : IDisposable
 
     public SampleProject(string kernelsText, string extraProperties = "", string extraItems = "")
     {
-        var targets = Path.Combine(SharedDsl.RepositoryRoot, "build", "GMac.targets");
+        var build = Path.Combine(SharedDsl.RepositoryRoot, "build");
         // Empty Directory.Build files stop MSBuild from importing any found above the temp folder.
         _temp.Write("Directory.Build.props", "<Project />\n");
         _temp.Write("Directory.Build.targets", "<Project />\n");
         ProjectFile = Write("Sample.csproj", $"""
             <Project Sdk="Microsoft.NET.Sdk">
+              <Import Project="{Path.Combine(build, "GMac.Build.props")}" />
               <PropertyGroup>
                 <TargetFramework>net10.0</TargetFramework>
                 <Nullable>enable</Nullable>
                 <TreatWarningsAsErrors>true</TreatWarningsAsErrors>
-                <GMacDslDirectory>$(MSBuildThisFileDirectory)dsl</GMacDslDirectory>
+                <GMacStandardLibrary>false</GMacStandardLibrary>
+                <GMacToolPath>{ToolPath}</GMacToolPath>
                 {extraProperties}
               </PropertyGroup>
               <ItemGroup>
                 {extraItems}
               </ItemGroup>
-              <Import Project="{targets}" />
+              <Import Project="{Path.Combine(build, "GMac.Build.targets")}" />
             </Project>
             """);
         Write(Path.Combine("dsl", "frame.gmac"), """
@@ -64,6 +68,9 @@ internal sealed class SampleProject : IDisposable
     }
 
     public string ProjectFile { get; }
+
+    /// <summary>The gmac tool built with this test assembly.</summary>
+    public static string ToolPath => Path.Combine(SharedDsl.RepositoryRoot, "src", "GMac.Cli", "bin", DotnetBuild.Configuration, "net10.0", "gmac.dll");
 
     /// <summary>The DSL file that defines the macro <c>Sum</c>.</summary>
     public string MacroFile { get; }

@@ -36,14 +36,17 @@ public sealed class CheckCommand_ExitCodes : IDisposable
     }
 
     [Fact]
-    public void A_dsl_file_given_for_the_folder_is_called_a_file()
+    public void A_gmac_file_is_read_alone_and_any_other_file_is_called_a_file()
     {
-        var file = Path.Combine(DslLibrary, "frames.gmac");
+        var frames = Path.Combine(DslLibrary, "frames.gmac");
+        var (exit, output, _) = Run("check", "--dsl", frames);
+        Assert.Equal(0, exit);
+        Assert.StartsWith("1 file(s)", output, StringComparison.Ordinal);
 
-        var (exit, _, err) = Run("check", "--dsl", file);
-
+        var readme = Path.Combine(DslLibrary, "README.md");
+        (exit, _, var err) = Run("check", "--dsl", readme);
         Assert.Equal(1, exit);
-        Assert.Contains($"{file}(1,1): error GMAC0003: '{file}' is a file, not a DSL folder: name the folder that holds the .gmac files (here '{DslLibrary}')", err);
+        Assert.Contains($"{readme}(1,1): error GMAC0003: '{readme}' is a file, not a DSL folder or a .gmac file: name the folder that holds the .gmac files (here '{DslLibrary}')", err);
     }
 
     [Fact]
