@@ -34,9 +34,26 @@ internal static class BindingPointGenerator
                 foreach (var token in SyntaxFactory.ParseTokens(region.Code).Where(t => t.IsKind(SyntaxKind.IdentifierToken)))
                     earlier.Add(token.ValueText);
         }
+        AddInvalidByteHints(file, diagnostics);
         diagnostics.Sort((a, b) => (a.Span.Line, a.Span.Column).CompareTo((b.Span.Line, b.Span.Column)));
         if (diagnostics.Count > 0) return new FileGeneration(file, file.Source.Text, regions, diagnostics);
         return new FileGeneration(file, Splice(file, regions), regions, diagnostics);
+    }
+
+    /// <summary>
+    /// A file that is not valid UTF-8 keeps its bytes as they are, but the C# text read from a line
+    /// holding such bytes may not be what the user's editor shows: a diagnostic on it says so.
+    /// </summary>
+    private static void AddInvalidByteHints(BindingPointFile file, List<Diagnostic> diagnostics)
+    {
+        if (!file.Source.HasInvalidBytes) return;
+        for (var i = 0; i < diagnostics.Count; i++)
+        {
+            var d = diagnostics[i];
+            if (!string.Equals(d.Span.FilePath, file.Path, StringComparison.Ordinal) || d.Span.Line < 1 || d.Span.Line > file.Lines.Count) continue;
+            if (file.Source.FirstInvalidByte(file.Lines[d.Span.Line - 1]) is { } invalid)
+                diagnostics[i] = d with { Message = $"{d.Message} (the file is not valid UTF-8: byte 0x{invalid.Byte:X2} at line {d.Span.Line}, column {invalid.Index + 1}; save the file as UTF-8)" };
+        }
     }
 
     private static GeneratedRegion GenerateRegion(BindingPointFile file, BindingPoint point, GenerationContext context, bool includeStatistics,

@@ -37,11 +37,13 @@ internal static partial class BindingPointReader
     public static BindingPointFile Read(SourceText source)
     {
         var path = source.Path;
-        var tree = CSharpSyntaxTree.ParseText(source.Text, path: path);
-        var activeInSomeBuild = DirectivesActiveInDebugBuilds(source.Text, path);
+        // Roslyn gets the text with only CR, LF and CRLF as line breaks, so its line numbers are the editor's.
+        var parsed = SourceText.ForParsing(source.Text);
+        var tree = CSharpSyntaxTree.ParseText(parsed, path: path);
+        var activeInSomeBuild = DirectivesActiveInDebugBuilds(parsed, path);
         var root = tree.GetRoot();
         var text = tree.GetText();
-        var lines = SplitLines(text);
+        var lines = SourceText.SplitLines(source.Text);
         var diagnostics = new List<Diagnostic>();
         var open = new Stack<(int Line, int Column, string? Macro, int Position)>();
         var found = new List<(string Macro, int Line, int Column, int EndLine, int Position)>();
@@ -110,13 +112,6 @@ internal static partial class BindingPointReader
         };
         return SyntaxFactory.ParseTokens(text).Where(t => t.IsKind(SyntaxKind.IdentifierToken)).Select(t => t.ValueText);
     }
-
-    /// <summary>
-    /// Lines with their own terminators, split as Roslyn splits them (so its line numbers index
-    /// this list); joining them gives the text back byte for byte.
-    /// </summary>
-    private static List<string> SplitLines(Microsoft.CodeAnalysis.Text.SourceText text) =>
-        text.Lines.Select(l => text.ToString(l.SpanIncludingLineBreak)).ToList();
 
     private static BindingPoint ReadPoint(string path, IReadOnlyList<string> lines, string macro, int regionLine, int regionColumn, int endLine,
         RegionScope scope, List<Diagnostic> diagnostics)
