@@ -12,5 +12,8 @@ internal sealed record BindingPoint(string MacroName, int RegionLine, int EndReg
 {
     public int RegionLineNumber => RegionLine + 1;
 
+    /// <summary>The line ending of the <c>#region</c> line, which the generated lines get.</summary>
+    public string NewLine { get; init; } = "\n";
+
     public IReadOnlyList<BindingSpec> Specs => Bindings.Select(b => b.Spec).ToList();
 }

@@ -85,7 +85,7 @@ internal static class BindingPointGenerator
             var code = CSharpEmitter.Emit(outcome.Result!.Block, new CSharpEmitOptions
             {
                 Indent = point.Indent,
-                NewLine = file.Source.NewLine,
+                NewLine = point.NewLine,
                 IncludeStatistics = includeStatistics,
                 IsNameTaken = isTaken,
                 ScalarType = scalarType,

@@ -124,7 +124,7 @@ internal static partial class BindingPointReader
             if (read.Spec is { } spec) bindings.Add(new BindingLine(spec));
             else diagnostics.Add(new(DiagnosticCodes.InvalidBindingLine, SourceSpan.At(path, read.Line, read.Column), read.Error!));
         }
-        return new BindingPoint(macro, regionLine, endLine, indent, bindings, regionColumn, scope);
+        return new BindingPoint(macro, regionLine, endLine, indent, bindings, regionColumn, scope) { NewLine = SourceText.LineEndingOf(lines[regionLine]) };
     }
 
     private static string LeadingWhiteSpace(string line)
