@@ -43,6 +43,9 @@ public static class DiagnosticCodes
     public static readonly DiagnosticDescriptor ConstantDivisionByZero = new("GMAC0131", Error, "a constant expression divides by zero", ReportedBy.DslLoad);
     public static readonly DiagnosticDescriptor NoRealValue = new("GMAC0132", Error, "a constant expression has no finite real value", ReportedBy.DslLoad);
 
+    // ---- output blocks
+    public static readonly DiagnosticDescriptor InvalidOutputText = new("GMAC0140", Error, "the text of an output block is not C# statements that can go into a region (a directive, an unclosed comment or string)", ReportedBy.DslLoad);
+
     // ---- DSL warnings
     public static readonly DiagnosticDescriptor Unused = new("GMAC0201", Warning, "a subspace, constant, transform or temporary is never used", ReportedBy.Check);
     public static readonly DiagnosticDescriptor OutputNeverAssigned = new("GMAC0202", Warning, "a macro never assigns one of its outputs", ReportedBy.Check);
