@@ -102,10 +102,15 @@ internal sealed class RegionPlacements
     /// <summary>The line of the file for a line of the probe text (lines after a probe move by the lines its region's body had).</summary>
     private int OriginalLine(int probeLine)
     {
-        var line = probeLine;
-        foreach (var (_, at, endLine) in _probes)
-            if (at < probeLine) line = endLine + (probeLine - at - 1);
-        return line;
+        // The last probe above the line (probes are in order).
+        int lo = 0, hi = _probes.Count - 1, last = -1;
+        while (lo <= hi)
+        {
+            var mid = (lo + hi) / 2;
+            if (_probes[mid].ProbeLine < probeLine) (last, lo) = (mid, mid + 1);
+            else hi = mid - 1;
+        }
+        return last < 0 ? probeLine : _probes[last].EndLine + (probeLine - _probes[last].ProbeLine - 1);
     }
 
     private static string Describe(SyntaxToken probe)
