@@ -110,9 +110,9 @@ internal static partial class BindingPointReader
         var points = found.Select((r, k) =>
         {
             var (problem, placement) = placements.Of(k);
-            if (problem is not null)
+            if (problem?.Split(RegionPlacements.Fix) is [var where, .. var fix])
                 diagnostics.Add(new(DiagnosticCodes.RegionNotAmongStatements, SourceSpan.At(path, r.Line + 1, r.Column),
-                    $"the GMac region is {problem}: its code is statements, which would not compile there; put the region in a method body, between statements"));
+                    $"the GMac region is {where}: its code is statements, which would not compile there; put the region {(fix is [var place] ? place : "in a method body, between statements")}"));
             return ReadPoint(path, lines, r.Macro, r.Line, r.Column, r.EndLine, scopes.Of(r.Position), diagnostics) with { Placement = placement };
         }).ToList();
         var bindNames = points.SelectMany(p => p.Bindings).SelectMany(b => BoundIdentifiers(b.Spec)).ToHashSet(StringComparer.Ordinal);

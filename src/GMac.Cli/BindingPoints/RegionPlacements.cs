@@ -51,7 +51,10 @@ internal sealed class RegionPlacements
 
     private string Path { get; }
 
-    /// <summary>Why statements cannot stand where region <paramref name="k"/> is, or null when they can; and where they land.</summary>
+    /// <summary>
+    /// Where region <paramref name="k"/> is when statements cannot stand there, else null (with where
+    /// to put it after <see cref="Fix"/>, if not in a method body between statements); and where its statements land.
+    /// </summary>
     public (string? Problem, RegionPlacement Placement) Of(int k)
     {
         if (Probe(k) is not { } probe) return (null, RegionPlacement.Unknown);
@@ -113,6 +116,9 @@ internal sealed class RegionPlacements
         return last < 0 ? probeLine : _probes[last].EndLine + (probeLine - _probes[last].ProbeLine - 1);
     }
 
+    /// <summary>Separates where a region is from where it should go, in <see cref="Of"/>'s problems.</summary>
+    public const string Fix = "|";
+
     private static string Describe(SyntaxToken probe)
     {
         foreach (var node in probe.Parent!.Ancestors())
@@ -125,8 +131,8 @@ internal sealed class RegionPlacements
                 case InitializerExpressionSyntax: return "in an initializer";
                 case ArrowExpressionClauseSyntax: return "in an expression body (=>)";
                 case LambdaExpressionSyntax: return "in a lambda's expression body";
-                case ExpressionStatementSyntax { Parent: LabeledStatementSyntax }: return "after a label; put it after a statement";
-                case ExpressionStatementSyntax { Parent: StatementSyntax or ElseClauseSyntax }: return "as the single statement of an if, else or loop without braces; put braces around the region";
+                case ExpressionStatementSyntax { Parent: LabeledStatementSyntax }: return "right after a label" + Fix + "after a statement";
+                case ExpressionStatementSyntax { Parent: StatementSyntax or ElseClauseSyntax }: return "the single statement of an if, else or loop without braces" + Fix + "inside braces";
                 case ExpressionStatementSyntax: return "where no statement can go";
                 case BaseTypeDeclarationSyntax: return "among the members of a type";
                 case BaseNamespaceDeclarationSyntax: return "in a namespace, outside any type";
