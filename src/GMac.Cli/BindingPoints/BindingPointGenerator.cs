@@ -5,6 +5,7 @@ using GMac.Dsl.Diagnostics;
 using GMac.Dsl.Generation;
 using Microsoft.CodeAnalysis;
 using Microsoft.CodeAnalysis.CSharp;
+using Microsoft.CodeAnalysis.CSharp.Syntax;
 using Diagnostic = GMac.Dsl.Diagnostics.Diagnostic;
 
 namespace GMac.Cli.BindingPoints;
@@ -24,19 +25,80 @@ internal static class BindingPointGenerator
         // temporaries of regions already generated in the same member. All of these come from the
         // file's text in order, so a second run picks the same names.
         var temporariesByScope = new Dictionary<int, HashSet<string>>();
+        var declaredBy = new List<(BindingPoint Point, IReadOnlySet<string> Names)>();
         foreach (var point in file.Points)
         {
             var earlier = temporariesByScope.TryGetValue(point.Scope.Id, out var t) ? t : temporariesByScope[point.Scope.Id] = new(StringComparer.Ordinal);
             bool IsTaken(string name) => file.Identifiers.Contains(name) || point.Scope.Names.Contains(name) || earlier.Contains(name);
             var region = GenerateRegion(file, point, context, includeStatistics, IsTaken, diagnostics);
             regions.Add(region);
-            if (region.Code is not null)
-                foreach (var token in SyntaxFactory.ParseTokens(region.Code).Where(t => t.IsKind(SyntaxKind.IdentifierToken)))
-                    earlier.Add(token.ValueText);
+            if (region.Code is null) continue;
+            foreach (var token in SyntaxFactory.ParseTokens(region.Code).Where(t => t.IsKind(SyntaxKind.IdentifierToken)))
+                earlier.Add(token.ValueText);
+            var declared = DeclaredNames(region.Code);
+            CheckDeclarations(file.Path, point, declared, declaredBy, diagnostics);
+            declaredBy.Add((point, declared));
         }
+        AddInvalidByteHints(file, diagnostics);
         diagnostics.Sort((a, b) => (a.Span.Line, a.Span.Column).CompareTo((b.Span.Line, b.Span.Column)));
         if (diagnostics.Count > 0) return new FileGeneration(file, file.Source.Text, regions, diagnostics);
         return new FileGeneration(file, Splice(file, regions), regions, diagnostics);
+    }
+
+    /// <summary>The locals a region's code declares: default outputs, temporaries, and any an output block declares.</summary>
+    private static HashSet<string> DeclaredNames(string code)
+    {
+        var statements = CSharpSyntaxTree.ParseText(code, new CSharpParseOptions(LanguageVersion.Latest, kind: SourceCodeKind.Script)).GetRoot();
+        return statements.DescendantNodes()
+            .Select(n => n switch
+            {
+                VariableDeclaratorSyntax v => v.Identifier.ValueText,
+                SingleVariableDesignationSyntax d => d.Identifier.ValueText,
+                _ => null,
+            })
+            .OfType<string>()
+            .ToHashSet(StringComparer.Ordinal);
+    }
+
+    /// <summary>
+    /// A local the code declares that a parameter or local around the region, or an earlier region
+    /// sharing its locals, already declares would not compile (CS0128, CS0136): report it at the
+    /// <c>#region</c> rather than write the file. Temporaries avoid every such name; default output
+    /// names (<c>w_e1</c>) and names an output block declares cannot move.
+    /// </summary>
+    private static void CheckDeclarations(string path, BindingPoint point, IReadOnlySet<string> declared,
+        List<(BindingPoint Point, IReadOnlySet<string> Names)> declaredBy, List<Diagnostic> diagnostics)
+    {
+        var at = SourceSpan.At(path, point.RegionLineNumber, point.RegionColumn);
+        const string fix = "bind the macro's outputs to variables of your own (//GMac.Bind(\"w\", …)) or rename the other one";
+        foreach (var name in declared.Order(StringComparer.Ordinal))
+        {
+            if (point.Placement.Declared.TryGetValue(name, out var other))
+            {
+                diagnostics.Add(new(DiagnosticCodes.AlreadyDeclared, at, $"the code of '{point.MacroName}' declares '{name}', but {other} is already declared where it goes; {fix}"));
+                continue;
+            }
+            var region = declaredBy.FirstOrDefault(r => r.Names.Contains(name) && r.Point.Placement.SharesLocalsWith(point.Placement));
+            if (region.Point is not null)
+                diagnostics.Add(new(DiagnosticCodes.AlreadyDeclared, at,
+                    $"the code of '{point.MacroName}' declares '{name}', which the code of the region of line {region.Point.RegionLineNumber} ('{region.Point.MacroName}') declares too, in the same or an enclosing block; {fix}"));
+        }
+    }
+
+    /// <summary>
+    /// A file that is not valid UTF-8 keeps its bytes as they are, but the C# text read from a line
+    /// holding such bytes may not be what the user's editor shows: a diagnostic on it says so.
+    /// </summary>
+    private static void AddInvalidByteHints(BindingPointFile file, List<Diagnostic> diagnostics)
+    {
+        if (!file.Source.HasInvalidBytes) return;
+        for (var i = 0; i < diagnostics.Count; i++)
+        {
+            var d = diagnostics[i];
+            if (!string.Equals(d.Span.FilePath, file.Path, StringComparison.Ordinal) || d.Span.Line < 1 || d.Span.Line > file.Lines.Count) continue;
+            if (file.Source.FirstInvalidByte(file.Lines[d.Span.Line - 1]) is { } invalid)
+                diagnostics[i] = d with { Message = $"{d.Message} (the file is not valid UTF-8: byte 0x{invalid.Byte:X2} at line {d.Span.Line}, column {invalid.Index + 1}; save the file as UTF-8)" };
+        }
     }
 
     private static GeneratedRegion GenerateRegion(BindingPointFile file, BindingPoint point, GenerationContext context, bool includeStatistics,
@@ -68,7 +130,7 @@ internal static class BindingPointGenerator
             var code = CSharpEmitter.Emit(outcome.Result!.Block, new CSharpEmitOptions
             {
                 Indent = point.Indent,
-                NewLine = file.Source.NewLine,
+                NewLine = point.NewLine,
                 IncludeStatistics = includeStatistics,
                 IsNameTaken = isTaken,
                 ScalarType = scalarType,

@@ -37,14 +37,17 @@ internal static partial class BindingPointReader
     public static BindingPointFile Read(SourceText source)
     {
         var path = source.Path;
-        var tree = CSharpSyntaxTree.ParseText(source.Text, path: path);
-        var activeInSomeBuild = DirectivesActiveInDebugBuilds(source.Text, path);
+        // Roslyn gets the text with only CR, LF and CRLF as line breaks, so its line numbers are the editor's.
+        var parsed = SourceText.ForParsing(source.Text);
+        var tree = CSharpSyntaxTree.ParseText(parsed, path: path);
+        var activeInSomeBuild = DirectivesActiveInDebugBuilds(parsed, path);
         var root = tree.GetRoot();
         var text = tree.GetText();
-        var lines = SplitLines(text);
+        var lines = SourceText.SplitLines(source.Text);
         var diagnostics = new List<Diagnostic>();
         var open = new Stack<(int Line, int Column, string? Macro, int Position)>();
         var found = new List<(string Macro, int Line, int Column, int EndLine, int Position)>();
+        var otherDirectives = new List<(int Line, int Column, string Name)>();
 
         // Roslyn parses an unmatched #endregion as a bad directive, so classify directives by their text.
         foreach (var directive in root.DescendantTrivia().Where(t => t.IsDirective))
@@ -55,7 +58,11 @@ internal static partial class BindingPointReader
             var line = position.Line;
             var column = position.Character + 1;
             var kind = DirectiveKind().Match(lines[line]);
-            if (!kind.Success) continue;
+            if (!kind.Success)
+            {
+                otherDirectives.Add((line, column, DirectiveName().Match(lines[line]).Groups[1].Value));
+                continue;
+            }
             if (kind.Groups[1].Value == "region")
             {
                 var header = RegionHeader().Match(lines[line]);
@@ -90,9 +97,24 @@ internal static partial class BindingPointReader
         foreach (var region in open)
             diagnostics.Add(new(DiagnosticCodes.UnmatchedRegion, SourceSpan.At(path, region.Line + 1, region.Column), "#region without a matching #endregion"));
 
+        // A region's body is replaced: another directive in it (#pragma, #nullable, #if…) would be deleted,
+        // changing how the rest of the file compiles.
+        foreach (var r in found)
+        foreach (var d in otherDirectives.Where(d => d.Line > r.Line && d.Line < r.EndLine))
+            diagnostics.Add(new(DiagnosticCodes.DirectiveInRegion, SourceSpan.At(path, d.Line + 1, d.Column),
+                $"#{d.Name} inside the GMac region of line {r.Line + 1}: the region's body is generated, so the directive would be deleted; move it before the #region or after the #endregion"));
+
+        var placements = new RegionPlacements(lines, found.Select(r => (r.Line, r.EndLine)).ToList(), path, CSharpParseOptions.Default, DebugBuild);
         var bodies = found.Select(r => (Start: text.Lines[r.Line].End, End: text.Lines[r.EndLine].Start)).ToList();
         var scopes = new RegionScopes(root, bodies);
-        var points = found.Select(r => ReadPoint(path, lines, r.Macro, r.Line, r.Column, r.EndLine, scopes.Of(r.Position), diagnostics)).ToList();
+        var points = found.Select((r, k) =>
+        {
+            var (problem, placement) = placements.Of(k);
+            if (problem?.Split(RegionPlacements.Fix) is [var where, .. var fix])
+                diagnostics.Add(new(DiagnosticCodes.RegionNotAmongStatements, SourceSpan.At(path, r.Line + 1, r.Column),
+                    $"the GMac region is {where}: its code is statements, which would not compile there; put the region {(fix is [var place] ? place : "in a method body, between statements")}"));
+            return ReadPoint(path, lines, r.Macro, r.Line, r.Column, r.EndLine, scopes.Of(r.Position), diagnostics) with { Placement = placement };
+        }).ToList();
         var bindNames = points.SelectMany(p => p.Bindings).SelectMany(b => BoundIdentifiers(b.Spec)).ToHashSet(StringComparer.Ordinal);
         diagnostics.Sort((a, b) => (a.Span.Line, a.Span.Column).CompareTo((b.Span.Line, b.Span.Column)));
         return new BindingPointFile(source, lines, points, diagnostics, bindNames);
@@ -111,13 +133,6 @@ internal static partial class BindingPointReader
         return SyntaxFactory.ParseTokens(text).Where(t => t.IsKind(SyntaxKind.IdentifierToken)).Select(t => t.ValueText);
     }
 
-    /// <summary>
-    /// Lines with their own terminators, split as Roslyn splits them (so its line numbers index
-    /// this list); joining them gives the text back byte for byte.
-    /// </summary>
-    private static List<string> SplitLines(Microsoft.CodeAnalysis.Text.SourceText text) =>
-        text.Lines.Select(l => text.ToString(l.SpanIncludingLineBreak)).ToList();
-
     private static BindingPoint ReadPoint(string path, IReadOnlyList<string> lines, string macro, int regionLine, int regionColumn, int endLine,
         RegionScope scope, List<Diagnostic> diagnostics)
     {
@@ -129,7 +144,7 @@ internal static partial class BindingPointReader
             if (read.Spec is { } spec) bindings.Add(new BindingLine(spec));
             else diagnostics.Add(new(DiagnosticCodes.InvalidBindingLine, SourceSpan.At(path, read.Line, read.Column), read.Error!));
         }
-        return new BindingPoint(macro, regionLine, endLine, indent, bindings, regionColumn, scope);
+        return new BindingPoint(macro, regionLine, endLine, indent, bindings, regionColumn, scope) { NewLine = SourceText.LineEndingOf(lines[regionLine]) };
     }
 
     private static string LeadingWhiteSpace(string line)
@@ -144,6 +159,9 @@ internal static partial class BindingPointReader
 
     [GeneratedRegex(@"^\s*#\s*(region|endregion)\b")]
     private static partial Regex DirectiveKind();
+
+    [GeneratedRegex(@"^\s*#\s*(\w*)")]
+    private static partial Regex DirectiveName();
 
     [GeneratedRegex(@"#\s*region\s+GMac\b")]
     private static partial Regex RegionMention();

@@ -246,10 +246,11 @@ internal static class GenerateCommand
         }).ToList();
     }
 
-    /// <summary>The emitted code without its first line, the statistics header.</summary>
+    /// <summary>The emitted code without its first line, the statistics header (ended by "\n", "\r\n" or "\r", as the file's lines are).</summary>
     private static string WithoutStatistics(string code)
     {
-        var end = code.IndexOf('\n');
+        var end = code.AsSpan().IndexOfAny('\r', '\n');
+        if (end >= 0 && code[end] == '\r' && end + 1 < code.Length && code[end + 1] == '\n') end++;
         return end >= 0 && code.TrimStart().StartsWith(StatisticsHeader, StringComparison.Ordinal) ? code[(end + 1)..] : code;
     }
 

@@ -48,7 +48,8 @@ internal static partial class ProjectContextCompiler
         {
             var bodies = new List<(GeneratedRegion Region, int Start, int End)>();
             var text = BindingPointGenerator.Splice(g.File, g.Regions, bodies);
-            return (g.File.Path, Tree: CSharpSyntaxTree.ParseText(text, ParseOptions, Path.GetFullPath(g.File.Path)), Bodies: bodies);
+            // Parsed as the reader parses it, so that lines in messages are the editor's lines.
+            return (g.File.Path, Tree: CSharpSyntaxTree.ParseText(BindingPoints.SourceText.ForParsing(text), ParseOptions, Path.GetFullPath(g.File.Path)), Bodies: bodies);
         }).ToList();
         var ownPaths = spliced.Select(s => s.Tree.FilePath).ToHashSet(StringComparer.Ordinal);
         var trees = spliced.Select(s => s.Tree).ToList();

@@ -73,7 +73,8 @@ public static partial class CSharpEmitter
                     sb.Append(name).Append(" = ").Append(Print(t.Value)).Append(';');
                     break;
                 case VerbatimStatement v:
-                    foreach (var part in v.Parts) sb.Append(part.Text ?? Print(part.Value!));
+                    // An output block's text has the line endings of its .gmac file: give it the file's own.
+                    foreach (var part in v.Parts) sb.Append(part.Text is { } text ? LineBreak().Replace(text, options.NewLine) : Print(part.Value!));
                     break;
             }
             sb.Append(options.NewLine);
@@ -148,6 +149,9 @@ public static partial class CSharpEmitter
 
     [GeneratedRegex(@"@?[A-Za-z_][A-Za-z0-9_]*")]
     private static partial Regex IdentifierLike();
+
+    [GeneratedRegex(@"\r\n|\r|\n")]
+    private static partial Regex LineBreak();
 
     /// <summary>A name that is not a member access: not right after a dot, and starting an identifier.</summary>
     [GeneratedRegex(@"(?<!\.\s*)(?<![A-Za-z0-9_@])@?[A-Za-z_][A-Za-z0-9_]*")]

@@ -69,6 +69,9 @@ public sealed class DiagnosticBag
     public void ReportNoRealValue(SourceSpan span, string expression, double value) =>
         Report(DiagnosticCodes.NoRealValue, span, $"'{expression}' has no finite real value (it evaluates to {(double.IsNaN(value) ? "NaN" : value > 0 ? "infinity" : "-infinity")})");
 
+    // ---- output blocks
+    public void ReportInvalidOutputText(SourceSpan span, string message) => Report(DiagnosticCodes.InvalidOutputText, span, message);
+
     // ---- warnings
     public void ReportUnused(SourceSpan span, string kind, string name) =>
         Report(DiagnosticCodes.Unused, span, $"{kind} '{name}' is never used");

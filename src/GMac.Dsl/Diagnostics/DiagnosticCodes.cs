@@ -43,6 +43,9 @@ public static class DiagnosticCodes
     public static readonly DiagnosticDescriptor ConstantDivisionByZero = new("GMAC0131", Error, "a constant expression divides by zero", ReportedBy.DslLoad);
     public static readonly DiagnosticDescriptor NoRealValue = new("GMAC0132", Error, "a constant expression has no finite real value", ReportedBy.DslLoad);
 
+    // ---- output blocks
+    public static readonly DiagnosticDescriptor InvalidOutputText = new("GMAC0140", Error, "the text of an output block is not C# statements that can go into a region (a directive, an unclosed comment or string)", ReportedBy.DslLoad);
+
     // ---- DSL warnings
     public static readonly DiagnosticDescriptor Unused = new("GMAC0201", Warning, "a subspace, constant, transform or temporary is never used", ReportedBy.Check);
     public static readonly DiagnosticDescriptor OutputNeverAssigned = new("GMAC0202", Warning, "a macro never assigns one of its outputs", ReportedBy.Check);
@@ -81,6 +84,9 @@ public static class DiagnosticCodes
     public static readonly DiagnosticDescriptor DisagreesWithEngine = new("GMAC0420", Error, "the generated code disagrees with the numeric engine", ReportedBy.Verify);
     public static readonly DiagnosticDescriptor KernelDoesNotCompile = new("GMAC0421", Error, "the generated code does not compile on its own", ReportedBy.Verify);
     public static readonly DiagnosticDescriptor DoesNotCompileInProject = new("GMAC0422", Error, "the generated code does not compile in its file and project", ReportedBy.Verify);
+    public static readonly DiagnosticDescriptor DirectiveInRegion = new("GMAC0430", Error, "a preprocessor directive (#pragma, #nullable, #if…) inside a GMac region, where it would be deleted", ReportedBy.SourceFiles);
+    public static readonly DiagnosticDescriptor RegionNotAmongStatements = new("GMAC0431", Error, "a GMac region is where statements cannot stand (among members, in an expression, under an if without braces)", ReportedBy.SourceFiles);
+    public static readonly DiagnosticDescriptor AlreadyDeclared = new("GMAC0432", Error, "the code of a region declares a local already declared where it goes (a default output name, by a parameter or another region)", ReportedBy.Generate | ReportedBy.Verify | ReportedBy.Build);
 
     /// <summary>Every descriptor above, in the order written.</summary>
     public static IReadOnlyList<DiagnosticDescriptor> All { get; } = typeof(DiagnosticCodes)

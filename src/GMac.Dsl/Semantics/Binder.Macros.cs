@@ -261,6 +261,8 @@ internal sealed partial class Binder
         var raw = o.OUTPUT_BLOCK().GetText();
         var open = raw.IndexOf('{');
         var text = raw[(open + 1)..^1];
+        if (OutputTextCheck.Problem(text, OutputReference) is { } problem)
+            _diagnostics.ReportInvalidOutputText(OutputTextCheck.SpanAt(span, raw, open + 1 + problem.Offset), problem.Message);
         var references = new List<BoundCoefficient>();
         foreach (Match match in OutputReference.Matches(text))
         {
