@@ -38,6 +38,11 @@ public static partial class CSharpEmitter
             ? ExprPrinter.Print(e, VariableText, f => SingleFunction(CSharpFunction(f)), SingleLiteral.Of)
             : ExprPrinter.Print(e, VariableText, CSharpFunction);
 
+        // A value dropped into an output block's text stands among operators the emitter cannot see
+        // ("2 * <w.e1>" with w.e1 = a - b must read 2 * (a - b)): only a name or a literal that is not
+        // negative goes in bare (a variable's text is already parenthesized where it needs to be).
+        string Operand(Expr e) => e is VariableExpr or ConstantExpr { Value: >= 0 } ? Print(e) : $"({Print(e)})";
+
         var sb = new StringBuilder();
         if (options.IncludeStatistics)
             sb.Append(options.Indent).Append("// GMac: ").Append(block.Statistics()).Append(options.NewLine);
@@ -74,7 +79,7 @@ public static partial class CSharpEmitter
                     break;
                 case VerbatimStatement v:
                     // An output block's text has the line endings of its .gmac file: give it the file's own.
-                    foreach (var part in v.Parts) sb.Append(part.Text is { } text ? LineBreak().Replace(text, options.NewLine) : Print(part.Value!));
+                    foreach (var part in v.Parts) sb.Append(part.Text is { } text ? LineBreak().Replace(text, options.NewLine) : Operand(part.Value!));
                     break;
             }
             sb.Append(options.NewLine);

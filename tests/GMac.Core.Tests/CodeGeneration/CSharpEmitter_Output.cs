@@ -40,6 +40,17 @@ public class CSharpEmitter_Output
     }
 
     [Fact]
+    public void A_value_in_verbatim_text_keeps_its_precedence_among_the_operators_around_it()
+    {
+        var inputs = new Dictionary<string, string> { ["a"] = "a", ["b"] = "b" };
+        var block = Block(inputs,
+            new VerbatimStatement([VerbatimPart.Literal("r = 2 * "), VerbatimPart.Expression(Difference(Variable("a"), Variable("b"))),
+                VerbatimPart.Literal(" + "), VerbatimPart.Expression(ConstantExpr.From(-1)), VerbatimPart.Literal(" * "), VerbatimPart.Expression(Variable("a")),
+                VerbatimPart.Literal(" / "), VerbatimPart.Expression(ConstantExpr.From(3)), VerbatimPart.Literal(";")]));
+        Assert.Equal("r = 2 * (a - b) + (-1.0) * a / 3.0;\n", CSharpEmitter.Emit(block));
+    }
+
+    [Fact]
     public void Literals_are_always_doubles()
     {
         Assert.Equal("2.0", ExprPrinter.Literal(2));
