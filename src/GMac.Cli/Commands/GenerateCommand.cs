@@ -2,8 +2,7 @@ using System.CommandLine;
 using System.Diagnostics;
 using System.Globalization;
 using System.Text;
-using GMac.Cli.BindingPoints;
-using GMac.Dsl.BindingPoints;
+using GMac.CSharp.BindingPoints;
 using GMac.Dsl.Diagnostics;
 using SafeFiles;
 
@@ -49,7 +48,7 @@ internal static class GenerateCommand
                 sources = [.. r.GetValue(paths) ?? [], .. listed];
             }
             if (dsl.Resolve(r, error, out var failure) is not { } dslSources) return failure;
-            var context = DslLoader.Load(dslSources, r.GetValue(cache), error);
+            var context = DslLoader.Load(dslSources, r.GetValue(cache) ?? DslOptions.DefaultCacheDirectory(dslSources), error);
             if (context is null) return ExitCodes.Diagnostics;
             context.DefaultScalarType = r.GetValue(scalar)!;
             return Execute(context, sources, r.GetValue(check), r.GetValue(stats), r.InvocationConfiguration.Output, error, watch);

@@ -1,7 +1,7 @@
 using System.CommandLine;
 using System.Globalization;
-using GMac.Cli.BindingPoints;
-using GMac.Cli.Verification;
+using GMac.CSharp.BindingPoints;
+using GMac.CSharp.Verification;
 using GMac.Dsl.Diagnostics;
 using GMac.Dsl.Generation;
 
@@ -27,7 +27,7 @@ internal static class VerifyCommand
         {
             var error = r.InvocationConfiguration.Error;
             if (dsl.Resolve(r, error, out var failure) is not { } sources) return failure;
-            var context = DslLoader.Load(sources, r.GetValue(cache), error);
+            var context = DslLoader.Load(sources, r.GetValue(cache) ?? DslOptions.DefaultCacheDirectory(sources), error);
             if (context is null) return ExitCodes.Diagnostics;
             context.DefaultScalarType = r.GetValue(scalar)!;
             return Execute(context, SharedOptions.PathsOrCurrent(r.GetValue(paths)), r.GetValue(seed), r.InvocationConfiguration.Output, error);

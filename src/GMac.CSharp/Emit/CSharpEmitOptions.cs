@@ -1,0 +1,29 @@
+namespace GMac.CSharp.Emit;
+
+/// <summary>Formatting choices for <see cref="CSharpEmitter"/>.</summary>
+public sealed record CSharpEmitOptions
+{
+    /// <summary>The scalar types the emitter writes: <c>double</c> (the default) and <c>float</c>.</summary>
+    public static readonly IReadOnlyList<string> ScalarTypes = ["double", "float"];
+
+    public string Indent { get; init; } = "";
+    public string NewLine { get; init; } = "\n";
+
+    /// <summary>
+    /// The declared type of temporaries, one of <see cref="ScalarTypes"/>. With <c>float</c>,
+    /// functions are <c>MathF</c>'s and constants <c>f</c>-suffixed literals rounded once to float.
+    /// </summary>
+    public string ScalarType { get; init; } = "double";
+
+    /// <summary>Adds a first comment line with the operation counts.</summary>
+    public bool IncludeStatistics { get; init; }
+
+    /// <summary>
+    /// Declares each output target as a local of the scalar type where it is assigned: for outputs
+    /// that no binding names, whose default names (<c>y_e1</c>) exist nowhere else.
+    /// </summary>
+    public bool DeclareOutputs { get; init; }
+
+    /// <summary>Names already used where the code goes; temporaries avoid them.</summary>
+    public Func<string, bool> IsNameTaken { get; init; } = _ => false;
+}
