@@ -1,4 +1,5 @@
 using GMac.Core.Numerics;
+using GMac.Dsl.BindingPoints;
 using GMac.Dsl.Generation;
 using GMac.Dsl.Semantics;
 using Microsoft.CodeAnalysis;
@@ -110,13 +111,7 @@ internal static class BindingTextCheck
         for (var i = 0; i < text.Length; i++)
         {
             if (text[i] != '<') continue;
-            var depth = 0;
-            var close = -1;
-            for (var j = i; j < text.Length && close < 0; j++)
-            {
-                if (text[j] == '<') depth++;
-                else if (text[j] == '>' && --depth == 0) close = j;
-            }
+            var close = BindingExpressions.TemplateClose(text, i);
             if (close < 0) break;
             parts.Add(text[(i + 1)..close]);
             i = close;

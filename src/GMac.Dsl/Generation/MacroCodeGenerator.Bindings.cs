@@ -1,5 +1,6 @@
 using GMac.Core.Algebra;
 using GMac.Core.Symbolic;
+using GMac.Dsl.BindingPoints;
 using GMac.Dsl.Compilation;
 using GMac.Dsl.Diagnostics;
 using GMac.Dsl.Semantics;
@@ -80,7 +81,7 @@ public sealed partial class MacroCodeGenerator
         while (i < text.Length)
         {
             if (text[i] != '<') { expression.Append(text[i++]); continue; }
-            var close = FindClosing(text, i);
+            var close = BindingExpressions.TemplateClose(text, i);
             if (close < 0)
             {
                 errors.Add(Problem(DiagnosticCodes.InvalidBindingValue, $"unbalanced '<' in \"{c.Value}\"", c.Line, c.Column));
@@ -101,18 +102,6 @@ public sealed partial class MacroCodeGenerator
             errors.Add(Problem(DiagnosticCodes.InvalidBindingValue, $"\"{c.Value}\" is not a valid scalar expression: {e.Message}", c.Line, c.Column));
         }
         return null;
-    }
-
-    /// <summary>The '>' closing the '&lt;' at start, allowing nested brackets (generic types, comparisons inside calls).</summary>
-    private static int FindClosing(string text, int start)
-    {
-        var depth = 0;
-        for (var i = start; i < text.Length; i++)
-        {
-            if (text[i] == '<') depth++;
-            else if (text[i] == '>' && --depth == 0) return i;
-        }
-        return -1;
     }
 
     private Assumptions BindClass(MacroSymbol macro, ClassBindingSpec c, AtomTable atoms,

@@ -43,6 +43,55 @@ public sealed class Generate_InPlace
         }
     }
 
+    /// <summary>u × v written over u, with u and w spelt differently but naming the same storage.</summary>
+    [Theory]
+    [InlineData("u=Vector3D:ψ", "w=Vector3D:ψ", "public static V[] Run(V ψ, V b) { CODE return new[] { ψ }; }")]
+    [InlineData("u=Vector3D:p", "w=Vector3D:this.p", "public sealed class H { public V p; public void Go(V b) { CODE } } public static V[] Run(V a, V b) { var h = new H { p = a }; h.Go(b); return new[] { h.p }; }")]
+    [InlineData("u=Vector3D:@a", "w=Vector3D:(a)", "public static V[] Run(V a, V b) { CODE return new[] { a }; }")]
+    [InlineData("u=Vector3D:arr[i]", "w=Vector3D:arr[j]", "public static V[] Run(V a, V b) { var arr = new[] { a }; int i = 0, j = 0; CODE return new[] { arr[0] }; }")]
+    public void Cross_product_into_its_own_operand_spelt_another_way(string u, string w, string method)
+    {
+        var kernel = Kernel.Compile("NormalToVectors", [u, "v=Vector3D:b", w], method);
+        var random = new Random(9);
+        for (var i = 0; i < 5; i++)
+        {
+            var (a, b) = (Coordinates(random), Coordinates(random));
+            var result = kernel.Run(a, b)[0];
+            double[] cross = [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+            for (var k = 0; k < 3; k++) Assert.Equal(cross[k], result[k], 12);
+        }
+    }
+
+    /// <summary>Two ref parameters may be one variable: the generated file, called with the same variable twice, still computes u × v.</summary>
+    [Fact]
+    public void Ref_parameters_that_are_one_variable()
+    {
+        using var temp = new TempFolder();
+        var path = temp.Write("Refs.cs", """
+            public struct V { public double x, y, z; }
+            public static class Kernel
+            {
+                public static void Go(ref V a, V b, ref V n)
+                {
+                    #region GMac : NormalToVectors
+                    //GMac.Bind("u", "Vector3D", a);
+                    //GMac.Bind("v", "Vector3D", b);
+                    //GMac.Bind("w", "Vector3D", n);
+                    #endregion
+                }
+
+                public static V[] Run(V a, V b) { Go(ref a, b, ref a); return new[] { a }; }
+            }
+            """);
+        var (exit, _, err) = Tool.Generate([path]);
+        Assert.True(exit == 0, err);
+        var kernel = Kernel.Load(File.ReadAllText(path));
+        double[] a = [0.3, -1.2, 0.7], b = [1.1, 0.4, -0.9];
+        var result = kernel.Run(a, b)[0];
+        double[] cross = [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+        for (var k = 0; k < 3; k++) Assert.Equal(cross[k], result[k], 12);
+    }
+
     private static double[] Coordinates(Random random) => [random.NextDouble() * 2 - 1, random.NextDouble() * 2 - 1, random.NextDouble() * 2 - 1];
 
     /// <summary>The code <c>gmac show</c> prints for some bindings, compiled into a method over a struct V of x, y, z.</summary>
@@ -52,7 +101,12 @@ public sealed class Generate_InPlace
         {
             var (exit, code, err) = Tool.Run(["show", macro, "--dsl", SharedDsl.DslDirectory, .. binds.SelectMany(b => new[] { "--bind", b })]);
             Assert.True(exit == 0, err);
-            var source = $"public struct V {{ public double x, y, z; }}\npublic static class Kernel {{ {method.Replace("CODE", code)} }}";
+            return Load($"public struct V {{ public double x, y, z; }}\npublic static class Kernel {{ {method.Replace("CODE", code)} }}");
+        }
+
+        /// <summary>Compiles a source with a struct V and a class Kernel whose Run returns V[].</summary>
+        public static Kernel Load(string source)
+        {
             var compilation = CSharpCompilation.Create("InPlace" + Guid.NewGuid().ToString("N"),
                 [CSharpSyntaxTree.ParseText(source)],
                 ((string)AppContext.GetData("TRUSTED_PLATFORM_ASSEMBLIES")!).Split(Path.PathSeparator).Select(p => MetadataReference.CreateFromFile(p)),
