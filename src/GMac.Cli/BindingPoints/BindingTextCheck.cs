@@ -53,6 +53,9 @@ internal static class BindingTextCheck
             return (DiagnosticCodes.NotAnExpression, $"the target '{target}' of output '{parameter}' is not one C# expression: {problem}");
         if (target is null || !IsAssignable(target))
             return (DiagnosticCodes.TargetNotAssignable, $"output '{parameter}' is bound to '{text}', which cannot be assigned; use a variable, field, property or element, e.g. \"<w.x>\"");
+        // Each coefficient is a separate assignment: a call or increment in the target would run at each one.
+        if (BindingExpressions.HasEffects(target))
+            return (DiagnosticCodes.TargetHasEffects, $"the target '{target}' of output '{parameter}' would be evaluated at every coefficient written (it calls, assigns or increments); bind a variable and copy it afterwards");
         return null;
     }
 

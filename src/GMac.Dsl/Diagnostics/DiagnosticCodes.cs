@@ -78,6 +78,7 @@ public static class DiagnosticCodes
     public static readonly DiagnosticDescriptor SkippedSourceFile = new("GMAC0411", Warning, "a special file (device, pipe, socket) among the C# paths is skipped", ReportedBy.Generate | ReportedBy.Build);
     public static readonly DiagnosticDescriptor NotAnExpression = new("GMAC0412", Error, "the C# text of a binding is not exactly one C# expression", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor InvalidScalarType = new("GMAC0413", Error, "a GMac.Type line names a scalar type other than float or double, or is given twice", ReportedBy.SourceFiles);
+    public static readonly DiagnosticDescriptor TargetHasEffects = new("GMAC0419", Error, "the C# target of an output calls, assigns or increments, so it would run at every write", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor DisagreesWithEngine = new("GMAC0420", Error, "the generated code disagrees with the numeric engine", ReportedBy.Verify);
     public static readonly DiagnosticDescriptor KernelDoesNotCompile = new("GMAC0421", Error, "the generated code does not compile on its own", ReportedBy.Verify);
     public static readonly DiagnosticDescriptor DoesNotCompileInProject = new("GMAC0422", Error, "the generated code does not compile in its file and project", ReportedBy.Verify);

@@ -152,8 +152,9 @@ public sealed partial class MacroCodeGenerator
         {
             Simplify = s => _cas.Simplify(s, assumptions),
             Join = join,
+            EvaluatedOnce = atoms.EvaluatedOnce,
         };
-        return new BindingPointPlan(macro, request, atoms.Texts, values => NumericReference(macro, inputValues, outputs, values))
+        return new BindingPointPlan(macro, request, atoms.DisplayTexts(), values => NumericReference(macro, inputValues, outputs, values))
         {
             DefaultOutputs = defaultOutputs,
         };
