@@ -27,7 +27,7 @@ public sealed record CSharpEmitOptions
     /// <summary>
     /// Whether writing an output (by its key in <see cref="CodeBlock.OutputTargets"/>) may change what
     /// an input (by its name in <see cref="CodeBlock.InputText"/>) reads; such an output is held until
-    /// no statement reads the input any more. Null: any output may change any input.
+    /// no statement reads the input any more. Null: decided on the names in their texts, an approximation.
     /// </summary>
     public Func<string, string, bool>? MayOverwrite { get; init; }
 

@@ -103,8 +103,8 @@ public static partial class CSharpEmitter
     /// Outputs whose target may be the storage of an input read after them: written in place, they
     /// would change that input under the statements still to read it (<c>a = a × b</c> bound to one
     /// variable). Their values are held in temporaries and written after the last statement.
-    /// <paramref name="mayOverwrite"/> decides for an output and an input; without it, every output
-    /// followed by a read of an input is held.
+    /// <paramref name="mayOverwrite"/> decides for an output and an input; without it, the names in
+    /// their texts do.
     /// </summary>
     private static HashSet<AssignmentStatement> HeldOutputs(CodeBlock block, Func<string, string, bool>? mayOverwrite)
     {
@@ -113,7 +113,7 @@ public static partial class CSharpEmitter
         for (var i = block.Statements.Count - 1; i >= 0; i--)
         {
             var s = block.Statements[i];
-            if (s is AssignmentStatement { IsOutput: true } o && readLater.Any(input => mayOverwrite?.Invoke(o.Target, input) ?? true))
+            if (s is AssignmentStatement { IsOutput: true } o && readLater.Any(input => (mayOverwrite ?? SharesRootName(block))(o.Target, input)))
                 held.Add(o);
             foreach (var e in s.Expressions)
             foreach (var v in e.DescendantsAndSelf().OfType<VariableExpr>())
@@ -122,6 +122,26 @@ public static partial class CSharpEmitter
         }
         return held;
     }
+
+    /// <summary>
+    /// The fallback when no decision is given: whether the target's variable (its first name, after
+    /// <c>this.</c>) is one the input's text reads. A textual approximation; gmac decides on the parsed syntax.
+    /// </summary>
+    private static Func<string, string, bool> SharesRootName(CodeBlock block) => (output, input) =>
+    {
+        var target = RootNames(block.OutputTargets[output]).FirstOrDefault();
+        return target is null || RootNames(block.InputText[input]).Contains(target);
+    };
+
+    private static IEnumerable<string> RootNames(string text) =>
+        RootName().Matches(ThisAccess().Replace(text, "")).Select(m => m.Value.TrimStart('@')).Where(n => n is not ("this" or "base"));
+
+    /// <summary>A name that is not a member: not right after a dot or an arrow, and starting an identifier.</summary>
+    [GeneratedRegex(@"(?<!(\.|->)\s*)(?<![\p{L}\p{N}_@])@?[\p{L}_][\p{L}\p{N}_]*")]
+    private static partial Regex RootName();
+
+    [GeneratedRegex(@"\b(this|base)\s*\.\s*")]
+    private static partial Regex ThisAccess();
 
     /// <summary>
     /// The preferred prefixes, then <c>tmp_1_</c>, <c>tmp_2_</c>, …: each taken name rules out at most
