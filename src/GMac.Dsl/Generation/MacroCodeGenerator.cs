@@ -117,6 +117,9 @@ public sealed partial class MacroCodeGenerator
             assumptions = WithBound(assumptions, variable, a.Expression, a.Value, a.IsMinimum, a, errors);
         }
         if (errors.Count > 0) return null;
+        // Only once the lines themselves are right: a mistyped blade would otherwise also leave its coefficient unbound.
+        UnboundInputs(macro, inputValues, regionLine, errors);
+        if (errors.Count > 0) return null;
         // Binding only inputs is enough: every output coefficient then goes to its default name.
         var defaultOutputs = outputs.Count == 0;
         if (defaultOutputs)
@@ -124,7 +127,7 @@ public sealed partial class MacroCodeGenerator
                 BindCoefficient(macro, (CoefficientBindingSpec)spec with { Line = regionLine, Column = 1 }, atoms, inputValues, outputs, outputTargets, errors);
         if (errors.Count > 0) return null;
 
-        // A variable coefficient that no binding supplies is zero.
+        // Every variable coefficient is bound (checked above); class constants come from the class.
         var inputs = MacroInputs.Build(_frames, SymbolicDomain.Instance, macro, (input, blade) => inputValues.GetValueOrDefault((input, blade), Scalar.Zero));
         var relations = MacroCompiler.NormalizationRelations(macro, inputs, SideRelations.Trigonometric);
         assumptions = assumptions.WithRelations(relations);
@@ -158,6 +161,24 @@ public sealed partial class MacroCodeGenerator
         {
             DefaultOutputs = defaultOutputs,
         };
+    }
+
+    /// <summary>
+    /// One error per input with variable coefficients that no line binds: taking them as zero would
+    /// silently compute something else (a forgotten or mistyped line); a zero must be written.
+    /// </summary>
+    private void UnboundInputs(MacroSymbol macro, Dictionary<(VariableSymbol, int), Scalar> inputValues, int regionLine, List<Diagnostic> errors)
+    {
+        foreach (var input in macro.Inputs)
+        {
+            var frame = _frames[input.Class!.Frame];
+            var missing = input.Class.VariableBlades.Order().Where(id => !inputValues.ContainsKey((input, id)))
+                .Select(id => $"{input.Name}.{frame.BladeName(new BasisBlade(id))}").ToList();
+            if (missing.Count == 0) continue;
+            errors.Add(Problem(DiagnosticCodes.UnboundInput,
+                $"input coefficient{(missing.Count > 1 ? "s" : "")} {string.Join(", ", missing.Select(m => $"'{m}'"))} of macro '{macro.Name}' {(missing.Count > 1 ? "are" : "is")} bound by no line; " +
+                $"bind {(missing.Count > 1 ? "them" : "it")}, e.g. //GMac.Bind(\"{missing[0]}\", \"<...>\"), or write //GMac.Bind(\"{missing[0]}\", \"0\") for zero", regionLine, 1));
+        }
     }
 
     /// <summary>
