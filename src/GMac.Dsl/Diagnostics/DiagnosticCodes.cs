@@ -63,7 +63,7 @@ public static class DiagnosticCodes
     public static readonly DiagnosticDescriptor EmptyAssumption = new("GMAC0312", Error, "assumed minimum and maximum of one expression leave no value", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor GeneratedDivisionByZero = new("GMAC0313", Error, "the macro divides by an expression that is zero for these bindings", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor TooLarge = new("GMAC0314", Error, "an operation of the macro is too large to evaluate symbolically", ReportedBy.Generation);
-    public static readonly DiagnosticDescriptor UnboundInput = new("GMAC0317", Error, "a variable coefficient of an input is bound by no line (write its value, e.g. \"0\", to mean it)", ReportedBy.Generation);
+    public static readonly DiagnosticDescriptor UnboundInput = new("GMAC0317", Error, "an input is bound by no line, or a coefficient is left out of a grade whose others are bound (write \"0\" to mean zero)", ReportedBy.Generation);
 
     // ---- binding points, C# files, verification
     public static readonly DiagnosticDescriptor UnmatchedEndRegion = new("GMAC0401", Error, "#endregion without a matching #region", ReportedBy.SourceFiles);

@@ -164,20 +164,34 @@ public sealed partial class MacroCodeGenerator
     }
 
     /// <summary>
-    /// One error per input with variable coefficients that no line binds: taking them as zero would
-    /// silently compute something else (a forgotten or mistyped line); a zero must be written.
+    /// Inputs that would silently be zero where the user meant a value (a forgotten or mistyped line):
+    /// an input no line binds at all, and a coefficient left out of a grade whose other coefficients
+    /// are bound (v.e1 and v.e2 without v.e3). Grades left out as a whole are zero: binding a vector to
+    /// a general multivector (u.e1, u.e2, u.e3, or a Vector3D class binding) means its other grades
+    /// are zero. A zero is bound by writing it, //GMac.Bind("v.e3", "0").
     /// </summary>
     private void UnboundInputs(MacroSymbol macro, Dictionary<(VariableSymbol, int), Scalar> inputValues, int regionLine, List<Diagnostic> errors)
     {
         foreach (var input in macro.Inputs)
         {
             var frame = _frames[input.Class!.Frame];
-            var missing = input.Class.VariableBlades.Order().Where(id => !inputValues.ContainsKey((input, id)))
-                .Select(id => $"{input.Name}.{frame.BladeName(new BasisBlade(id))}").ToList();
+            string Key(int id) => $"'{input.Name}.{frame.BladeName(new BasisBlade(id))}'";
+            var blades = input.Class.VariableBlades.Order().ToList();
+            var bound = blades.Where(id => inputValues.ContainsKey((input, id))).ToList();
+            if (blades.Count == 0) continue;
+            if (bound.Count == 0)
+            {
+                errors.Add(Problem(DiagnosticCodes.UnboundInput,
+                    $"input '{input.Name}' of macro '{macro.Name}' is bound by no line; bind it (e.g. //GMac.Bind(\"{input.Name}\", \"<class binding>\", obj)), " +
+                    $"or write its coefficients {string.Join(", ", blades.Select(Key))} as \"0\" to mean zero", regionLine, 1));
+                continue;
+            }
+            var grades = bound.Select(id => System.Numerics.BitOperations.PopCount((uint)id)).ToHashSet();
+            var missing = blades.Where(id => !bound.Contains(id) && grades.Contains(System.Numerics.BitOperations.PopCount((uint)id))).ToList();
             if (missing.Count == 0) continue;
             errors.Add(Problem(DiagnosticCodes.UnboundInput,
-                $"input coefficient{(missing.Count > 1 ? "s" : "")} {string.Join(", ", missing.Select(m => $"'{m}'"))} of macro '{macro.Name}' {(missing.Count > 1 ? "are" : "is")} bound by no line; " +
-                $"bind {(missing.Count > 1 ? "them" : "it")}, e.g. //GMac.Bind(\"{missing[0]}\", \"<...>\"), or write //GMac.Bind(\"{missing[0]}\", \"0\") for zero", regionLine, 1));
+                $"input coefficient{(missing.Count > 1 ? "s" : "")} {string.Join(", ", missing.Select(Key))} of macro '{macro.Name}' {(missing.Count > 1 ? "are" : "is")} bound by no line, " +
+                $"though other coefficients of {(missing.Count > 1 ? "their" : "its")} grade are; bind {(missing.Count > 1 ? "them" : "it")}, or write \"0\" to mean zero", regionLine, 1));
         }
     }
 
