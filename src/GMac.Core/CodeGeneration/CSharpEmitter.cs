@@ -178,6 +178,6 @@ public static partial class CSharpEmitter
     [GeneratedRegex(@"@?[A-Za-z_][A-Za-z0-9_]*")]
     private static partial Regex IdentifierLike();
 
-    [GeneratedRegex(@"^(@?[A-Za-z_][A-Za-z0-9_]*(\s*\.\s*@?[A-Za-z_][A-Za-z0-9_]*|\s*\[[^\[\]]*\])*|[0-9]+(\.[0-9]+)?([eE][+-]?[0-9]+)?[dD]?)$")]
+    [GeneratedRegex(@"^(@?[\p{L}_][\p{L}\p{N}_]*(\s*\.\s*@?[\p{L}_][\p{L}\p{N}_]*|\s*\[[^\[\]]*\])*|[0-9]+(\.[0-9]+)?([eE][+-]?[0-9]+)?[dD]?)$")]
     private static partial Regex SimpleExpression();
 }
