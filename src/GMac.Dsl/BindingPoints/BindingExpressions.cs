@@ -47,13 +47,15 @@ public static class BindingExpressions
     /// </summary>
     public static Func<string, string, bool> Overwrites(GMac.Core.CodeGeneration.CodeBlock block, StorageNames? names = null)
     {
-        var known = new Dictionary<(string, string), bool>();
+        // Each text is parsed once per block, not once per pair.
+        var written = new Dictionary<string, List<Step>?>(StringComparer.Ordinal);
+        var read = new Dictionary<string, List<List<Step>>?>(StringComparer.Ordinal);
         return (output, input) =>
         {
-            if (known.TryGetValue((output, input), out var answer)) return answer;
-            answer = !block.OutputTargets.TryGetValue(output, out var target) || !block.InputText.TryGetValue(input, out var text) || MayAlias(target, text, names);
-            known[(output, input)] = answer;
-            return answer;
+            if (!block.OutputTargets.TryGetValue(output, out var target) || !block.InputText.TryGetValue(input, out var text)) return true;
+            if (!written.TryGetValue(target, out var w)) written[target] = w = Path(Parse(target));
+            if (!read.TryGetValue(text, out var r)) read[text] = r = ReadPaths(Parse(text));
+            return w is null || r is null || r.Any(p => Overlap(w, p, names ?? StorageNames.None));
         };
     }
 
