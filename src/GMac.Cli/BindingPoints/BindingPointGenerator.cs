@@ -135,6 +135,7 @@ internal static class BindingPointGenerator
                 IsNameTaken = isTaken,
                 ScalarType = scalarType,
                 DeclareOutputs = outcome.Plan?.DefaultOutputs ?? false,
+                MayOverwrite = BindingExpressions.Overwrites(outcome.Result.Block, point.Scope.Storage),
             });
             return new GeneratedRegion(point, outcome, code) { ScalarType = scalarType };
         }

@@ -1,4 +1,5 @@
 using GMac.Core.Numerics;
+using GMac.Dsl.BindingPoints;
 using GMac.Dsl.Generation;
 using GMac.Dsl.Semantics;
 using Microsoft.CodeAnalysis;
@@ -52,6 +53,9 @@ internal static class BindingTextCheck
             return (DiagnosticCodes.NotAnExpression, $"the target '{target}' of output '{parameter}' is not one C# expression: {problem}");
         if (target is null || !IsAssignable(target))
             return (DiagnosticCodes.TargetNotAssignable, $"output '{parameter}' is bound to '{text}', which cannot be assigned; use a variable, field, property or element, e.g. \"<w.x>\"");
+        // Each coefficient is a separate assignment: a call or increment in the target would run at each one.
+        if (BindingExpressions.HasEffects(target))
+            return (DiagnosticCodes.TargetHasEffects, $"the target '{target}' of output '{parameter}' would be evaluated at every coefficient written (it calls, assigns or increments); bind a variable and copy it afterwards");
         return null;
     }
 
@@ -110,13 +114,7 @@ internal static class BindingTextCheck
         for (var i = 0; i < text.Length; i++)
         {
             if (text[i] != '<') continue;
-            var depth = 0;
-            var close = -1;
-            for (var j = i; j < text.Length && close < 0; j++)
-            {
-                if (text[j] == '<') depth++;
-                else if (text[j] == '>' && --depth == 0) close = j;
-            }
+            var close = BindingExpressions.TemplateClose(text, i);
             if (close < 0) break;
             parts.Add(text[(i + 1)..close]);
             i = close;

@@ -3,6 +3,7 @@ using System.CommandLine.Parsing;
 using GMac.Cli.BindingPoints;
 using GMac.Core.CodeGeneration;
 using GMac.Core.Numerics;
+using GMac.Dsl.BindingPoints;
 using GMac.Dsl.Diagnostics;
 using GMac.Dsl.Generation;
 
@@ -111,6 +112,7 @@ internal static class ShowCommand
             ScalarType = scalarType,
             // Outputs no --bind names get default names, declared as the region would declare them.
             DeclareOutputs = outcome.Plan?.DefaultOutputs ?? false,
+            MayOverwrite = BindingExpressions.Overwrites(outcome.Result.Block),
         }));
         return ExitCodes.Success;
     }

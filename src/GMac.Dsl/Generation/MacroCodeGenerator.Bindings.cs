@@ -1,5 +1,6 @@
 using GMac.Core.Algebra;
 using GMac.Core.Symbolic;
+using GMac.Dsl.BindingPoints;
 using GMac.Dsl.Compilation;
 using GMac.Dsl.Diagnostics;
 using GMac.Dsl.Semantics;
@@ -73,20 +74,20 @@ public sealed partial class MacroCodeGenerator
     {
         var text = c.Value.Trim();
         if (!c.IsTemplate)
-            return Core.Numerics.Rational.TryParse(text, out var number) ? Scalar.Constant(number) : atoms.For(text);
+            return Core.Numerics.Rational.TryParse(text, out var number) ? Scalar.Constant(number) : Atom(text, atoms);
 
         var expression = new System.Text.StringBuilder();
         var i = 0;
         while (i < text.Length)
         {
             if (text[i] != '<') { expression.Append(text[i++]); continue; }
-            var close = FindClosing(text, i);
+            var close = BindingExpressions.TemplateClose(text, i);
             if (close < 0)
             {
                 errors.Add(Problem(DiagnosticCodes.InvalidBindingValue, $"unbalanced '<' in \"{c.Value}\"", c.Line, c.Column));
                 return null;
             }
-            expression.Append(atoms.For(text[(i + 1)..close]).ToString());
+            expression.Append(Atom(text[(i + 1)..close], atoms).ToString());
             i = close + 1;
         }
         try
@@ -103,17 +104,8 @@ public sealed partial class MacroCodeGenerator
         return null;
     }
 
-    /// <summary>The '>' closing the '&lt;' at start, allowing nested brackets (generic types, comparisons inside calls).</summary>
-    private static int FindClosing(string text, int start)
-    {
-        var depth = 0;
-        for (var i = start; i < text.Length; i++)
-        {
-            if (text[i] == '<') depth++;
-            else if (text[i] == '>' && --depth == 0) return i;
-        }
-        return -1;
-    }
+    /// <summary>The variable for a C# expression read by the code; one with effects (a call, an increment) is evaluated once.</summary>
+    private static Scalar Atom(string text, AtomTable atoms) => atoms.For(BindingExpressions.HasEffects(text) ? atoms.Once(text) : text);
 
     private Assumptions BindClass(MacroSymbol macro, ClassBindingSpec c, AtomTable atoms,
         Dictionary<(VariableSymbol, int), Scalar> inputValues,
@@ -139,6 +131,8 @@ public sealed partial class MacroCodeGenerator
 
         if (parameter.Kind == VariableKind.Input)
         {
+            // An object with effects (Next(), a[i++]) is read once, not once per coefficient.
+            if (BindingExpressions.HasEffects(target)) target = atoms.Once(target);
             var observer = new EvaluationObserver<Scalar> { Member = path => atoms.For(Member(path)) };
             foreach (var coefficient in binding.Coefficients)
             {
