@@ -179,6 +179,11 @@ public sealed class FullTwist : Twist
         //GMac.Bind("du", "Vector3D", xu);
         //GMac.Bind("y", "Vector3D", y);
         //GMac.Bind("yu", "Vector3D", yu);
+        //GMac.Bind("angleRv.1", "0");
+        //GMac.Bind("slideRv.1", "0");
+        //GMac.Bind("dv.e1", "0");
+        //GMac.Bind("dv.e2", "0");
+        //GMac.Bind("dv.e3", "0");
         var (tmp1, tmp0) = Math.SinCos(angle);
         double tmp2 = x.z - origin.z;
         double tmp3 = x.y - origin.y;

@@ -91,6 +91,8 @@ public sealed class RotationTwist : Twist
         //GMac.Bind("angle.1", angle);
         //GMac.Bind("x", "Vector3D", p);
         //GMac.Bind("y", "Vector3D", y);
+        //GMac.Bind("axis.e2", "0");
+        //GMac.Bind("axis.e3", "0");
         double tmp0 = p.y - origin.y;
         double tmp1 = p.z - origin.z;
         y.x = p.x;
@@ -114,6 +116,8 @@ public sealed class RotationTwist : Twist
         //GMac.Bind("angle.1", angle);
         //GMac.Bind("x", "Vector3D", p);
         //GMac.Bind("y", "Vector3D", y);
+        //GMac.Bind("axis.e1", "0");
+        //GMac.Bind("axis.e3", "0");
         double tmp0 = p.x - origin.x;
         double tmp1 = p.z - origin.z;
         var (tmp2, tmp3) = Math.SinCos(angle);
@@ -137,6 +141,8 @@ public sealed class RotationTwist : Twist
         //GMac.Bind("angle.1", angle);
         //GMac.Bind("x", "Vector3D", p);
         //GMac.Bind("y", "Vector3D", y);
+        //GMac.Bind("axis.e1", "0");
+        //GMac.Bind("axis.e2", "0");
         double tmp0 = p.x - origin.x;
         double tmp1 = p.y - origin.y;
         var (tmp2, tmp3) = Math.SinCos(angle);
@@ -244,6 +250,10 @@ public sealed class RotationTwist : Twist
         //GMac.Bind("du", "Vector3D", xu);
         //GMac.Bind("y", "Vector3D", y);
         //GMac.Bind("yu", "Vector3D", yu);
+        //GMac.Bind("rv.1", "0");
+        //GMac.Bind("dv.e1", "0");
+        //GMac.Bind("dv.e2", "0");
+        //GMac.Bind("dv.e3", "0");
         var (tmp1, tmp0) = Math.SinCos(angle);
         double tmp2 = x.z - origin.z;
         double tmp3 = origin.y - x.y;

@@ -65,10 +65,12 @@ public sealed class ApplyTwistToPoint3DKernel : GaKernel<TwistInput, Vec3>
         double tmp9 = tmp2 * tmp7;
         double tmp10 = tmp2 * tmp6;
         double tmp11 = (tmp7 * x.Axis.y + tmp6 * x.Axis.z - x.Axis.x * tmp5) * tmp1;
-        p.x = tmp8 * (x.Axis.y * tmp10 - x.Axis.z * tmp9) + x.Axis.x * x.Slide + x.Point.x - tmp4 * (x.Axis.x * tmp11 + tmp5);
+        double tmp13 = tmp8 * (x.Axis.y * tmp10 - x.Axis.z * tmp9) + x.Axis.x * x.Slide + x.Point.x - tmp4 * (x.Axis.x * tmp11 + tmp5);
         double tmp12 = tmp2 * tmp5;
-        p.y = tmp4 * (tmp7 - x.Axis.y * tmp11) - (tmp8 * (x.Axis.x * tmp10 + x.Axis.z * tmp12) - x.Axis.y * x.Slide - x.Point.y);
+        double tmp14 = tmp4 * (tmp7 - x.Axis.y * tmp11) - (tmp8 * (x.Axis.x * tmp10 + x.Axis.z * tmp12) - x.Axis.y * x.Slide - x.Point.y);
         p.z = tmp8 * (x.Axis.y * tmp12 + x.Axis.x * tmp9) + x.Point.z + x.Axis.z * x.Slide + tmp4 * (tmp6 - x.Axis.z * tmp11);
+        p.x = tmp13;
+        p.y = tmp14;
         #endregion
     }
 

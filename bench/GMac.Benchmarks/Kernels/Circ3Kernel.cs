@@ -41,9 +41,11 @@ public sealed class Circ3Kernel : GaKernel<Vec3, Vec3>
         //GMac.Bind("v.e2", "<v.y>");
         //GMac.Bind("v.e3", "<v.z>");
         double tmp0 = 4.0 * (p.y * p.y + p.x * p.x - 1.0);
-        v.x = p.x * tmp0;
-        v.y = p.y * tmp0;
+        double tmp1 = p.x * tmp0;
+        double tmp2 = p.y * tmp0;
         v.z = 2.0 * p.z;
+        v.x = tmp1;
+        v.y = tmp2;
         #endregion
     }
 

@@ -51,15 +51,20 @@ public sealed class GramSchmidtContractionKernel : GaKernel<Vec3Triple, Vec3Trip
         double tmp1 = v.A.x * v.B.z - v.A.z * v.B.x;
         double tmp2 = v.A.z * v.B.y - v.A.y * v.B.z;
         double tmp3 = -(tmp0 * v.C.z) - tmp2 * v.C.x - tmp1 * v.C.y;
-        w.A.x = v.A.x;
-        w.A.y = v.A.y;
-        w.A.z = v.A.z;
-        w.B.x = tmp0 * v.A.y - tmp1 * v.A.z;
-        w.B.y = tmp2 * v.A.z - tmp0 * v.A.x;
+        double tmp4 = v.A.x;
+        double tmp5 = v.A.y;
+        double tmp6 = v.A.z;
+        double tmp7 = tmp0 * v.A.y - tmp1 * v.A.z;
+        double tmp8 = tmp2 * v.A.z - tmp0 * v.A.x;
         w.B.z = tmp1 * v.A.x - tmp2 * v.A.y;
         w.C.x = tmp2 * tmp3;
         w.C.y = tmp1 * tmp3;
         w.C.z = tmp0 * tmp3;
+        w.A.x = tmp4;
+        w.A.y = tmp5;
+        w.A.z = tmp6;
+        w.B.x = tmp7;
+        w.B.y = tmp8;
         #endregion
     }
 

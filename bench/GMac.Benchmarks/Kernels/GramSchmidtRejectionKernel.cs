@@ -62,16 +62,22 @@ public sealed class GramSchmidtRejectionKernel : GaKernel<Vec3Triple, Vec3Triple
         double tmp9 = v.A.z * tmp5 - v.A.x * tmp7;
         double tmp10 = v.A.y * tmp7;
         double tmp11 = tmp10 - v.A.z * tmp6;
-        w.A.x = v.A.x;
-        w.A.y = v.A.y;
-        w.A.z = v.A.z;
-        w.B.x = tmp5;
-        w.B.y = tmp6;
-        w.B.z = tmp7;
+        double tmp13 = v.A.x;
+        double tmp14 = v.A.y;
+        double tmp15 = v.A.z;
+        double tmp16 = tmp5;
+        double tmp17 = tmp6;
+        double tmp18 = tmp7;
         double tmp12 = (v.C.y * tmp9 + v.C.x * tmp11 + v.C.z * tmp8) / (tmp8 * tmp8 + tmp9 * tmp9 + tmp11 * tmp11);
         w.C.x = tmp11 * tmp12;
         w.C.y = tmp9 * tmp12;
         w.C.z = tmp8 * tmp12;
+        w.A.x = tmp13;
+        w.A.y = tmp14;
+        w.A.z = tmp15;
+        w.B.x = tmp16;
+        w.B.y = tmp17;
+        w.B.z = tmp18;
         #endregion
     }
 

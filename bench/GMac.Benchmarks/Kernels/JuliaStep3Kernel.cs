@@ -48,8 +48,9 @@ public sealed class JuliaStep3Kernel : GaKernel<Vec2Pair, Vec2>
         //GMac.Bind("y.e2", "<y.y>");
         double tmp0 = j.X.y * j.X.y;
         double tmp1 = j.X.x * j.X.x;
-        y.x = j.X.x * (tmp1 - 3.0 * tmp0) + j.C.x;
+        double tmp2 = j.X.x * (tmp1 - 3.0 * tmp0) + j.C.x;
         y.y = j.X.y * (3.0 * tmp1 - tmp0) + j.C.y;
+        y.x = tmp2;
         #endregion
     }
 

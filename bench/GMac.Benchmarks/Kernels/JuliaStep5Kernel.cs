@@ -50,8 +50,9 @@ public sealed class JuliaStep5Kernel : GaKernel<Vec2Pair, Vec2>
         double tmp1 = 10.0 * tmp0;
         double tmp2 = j.X.x * j.X.x;
         double tmp3 = tmp0 * tmp0;
-        y.x = j.X.x * ((tmp2 - tmp1) * tmp2 + 5.0 * tmp3) + j.C.x;
+        double tmp4 = j.X.x * ((tmp2 - tmp1) * tmp2 + 5.0 * tmp3) + j.C.x;
         y.y = j.X.y * ((5.0 * tmp2 - tmp1) * tmp2 + tmp3) + j.C.y;
+        y.x = tmp4;
         #endregion
     }
 

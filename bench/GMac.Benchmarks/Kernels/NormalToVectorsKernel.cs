@@ -45,9 +45,11 @@ public sealed class NormalToVectorsKernel : GaKernel<Vec3Pair, Vec3>
         //GMac.Bind("u", "Vector3D", "x.U");
         //GMac.Bind("v", "Vector3D", "x.V");
         //GMac.Bind("w", "Vector3D", "w");
-        w.x = x.U.y * x.V.z - x.U.z * x.V.y;
-        w.y = x.U.z * x.V.x - x.U.x * x.V.z;
+        double tmp0 = x.U.y * x.V.z - x.U.z * x.V.y;
+        double tmp1 = x.U.z * x.V.x - x.U.x * x.V.z;
         w.z = x.U.x * x.V.y - x.U.y * x.V.x;
+        w.x = tmp0;
+        w.y = tmp1;
         #endregion
     }
 

@@ -63,10 +63,12 @@ public sealed class RotateAboutAxisThroughPoint3DKernel : GaKernel<AxisRotationI
         double tmp9 = tmp2 * tmp5;
         double tmp10 = tmp2 * tmp7;
         double tmp11 = (tmp7 * x.Axis.z + x.Axis.x * tmp6 + x.Axis.y * tmp5) * tmp1;
-        p.x = tmp8 * (x.Axis.y * tmp10 - x.Axis.z * tmp9) + x.Point.x - tmp4 * (tmp6 - x.Axis.x * tmp11);
+        double tmp13 = tmp8 * (x.Axis.y * tmp10 - x.Axis.z * tmp9) + x.Point.x - tmp4 * (tmp6 - x.Axis.x * tmp11);
         double tmp12 = tmp2 * tmp6;
-        p.y = tmp8 * (x.Axis.z * tmp12 - x.Axis.x * tmp10) + x.Point.y - tmp4 * (tmp5 - x.Axis.y * tmp11);
+        double tmp14 = tmp8 * (x.Axis.z * tmp12 - x.Axis.x * tmp10) + x.Point.y - tmp4 * (tmp5 - x.Axis.y * tmp11);
         p.z = tmp8 * (x.Axis.x * tmp9 - x.Axis.y * tmp12) + x.Point.z - tmp4 * (tmp7 - x.Axis.z * tmp11);
+        p.x = tmp13;
+        p.y = tmp14;
         #endregion
     }
 

@@ -84,10 +84,13 @@ public sealed class RotorInterpolateKernel : GaKernel<RotorPair, Rotor3>
         var (tmp4, tmp6) = Math.SinCos(tmp3);
         double tmp5 = tmp4 / tmp2;
         double tmp7 = tmp6 - tmp0 * tmp5;
-        r.w = p.R1.w * tmp7 + p.R2.w * tmp5;
-        r.x = p.R1.x * tmp7 + p.R2.x * tmp5;
-        r.y = p.R1.y * tmp7 + p.R2.y * tmp5;
+        double tmp8 = p.R1.w * tmp7 + p.R2.w * tmp5;
+        double tmp9 = p.R1.x * tmp7 + p.R2.x * tmp5;
+        double tmp10 = p.R1.y * tmp7 + p.R2.y * tmp5;
         r.z = p.R1.z * tmp7 + p.R2.z * tmp5;
+        r.w = tmp8;
+        r.x = tmp9;
+        r.y = tmp10;
         #endregion
     }
 

@@ -57,22 +57,27 @@ public sealed class RotorToMatrixKernel : GaKernel<Rotor3, Vec3Triple>
         double tmp2 = q.z + q.z;
         double tmp3 = q.z * tmp2;
         double tmp4 = q.y * tmp1;
-        m.A.x = 1.0 - tmp4 - tmp3;
+        double tmp12 = 1.0 - tmp4 - tmp3;
         double tmp5 = q.x * tmp1;
         double tmp6 = q.w * tmp2;
-        m.A.y = tmp5 - tmp6;
+        double tmp13 = tmp5 - tmp6;
         double tmp7 = q.x * tmp2;
         double tmp8 = q.w * tmp1;
-        m.A.z = tmp8 + tmp7;
-        m.B.x = tmp6 + tmp5;
+        double tmp14 = tmp8 + tmp7;
+        double tmp15 = tmp6 + tmp5;
         double tmp9 = q.x * tmp0;
-        m.B.y = 1.0 - tmp9 - tmp3;
+        double tmp16 = 1.0 - tmp9 - tmp3;
         double tmp10 = q.y * tmp2;
         double tmp11 = q.w * tmp0;
         m.B.z = tmp10 - tmp11;
         m.C.x = tmp7 - tmp8;
         m.C.y = tmp11 + tmp10;
         m.C.z = 1.0 - tmp9 - tmp4;
+        m.A.x = tmp12;
+        m.A.y = tmp13;
+        m.A.z = tmp14;
+        m.B.x = tmp15;
+        m.B.y = tmp16;
         #endregion
     }
 

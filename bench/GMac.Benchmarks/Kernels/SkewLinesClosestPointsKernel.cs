@@ -61,8 +61,9 @@ public sealed class SkewLinesClosestPointsKernel : GaKernel<LinePair, LineParame
         double tmp7 = tmp0 * tmp3 - tmp5 * tmp2;
         double tmp8 = tmp2 * tmp4 + tmp1 * tmp3;
         double tmp9 = tmp5 * tmp1 + tmp0 * tmp4;
-        t.T1 = tmp6 * (l.D2.y * tmp7 + l.D2.z * tmp9 - l.D2.x * tmp8);
+        double tmp10 = tmp6 * (l.D2.y * tmp7 + l.D2.z * tmp9 - l.D2.x * tmp8);
         t.T2 = tmp6 * (l.D1.y * tmp7 + l.D1.z * tmp9 - l.D1.x * tmp8);
+        t.T1 = tmp10;
         #endregion
     }
 

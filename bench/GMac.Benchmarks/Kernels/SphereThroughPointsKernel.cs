@@ -77,11 +77,15 @@ public sealed class SphereThroughPointsKernel : GaKernel<Vec3Quad, DualSphere>
         double tmp20 = tmp13 * tmp15 + tmp18 * tmp9 - tmp12 * tmp16;
         double tmp21 = tmp14 * tmp15 + tmp18 * tmp10 - tmp12 * tmp17;
         double tmp22 = tmp11 * tmp18 + tmp14 * tmp16 - tmp13 * tmp17;
-        s.No = tmp19;
-        s.E1 = -tmp22;
-        s.E2 = tmp21;
-        s.E3 = -tmp20;
+        double tmp23 = tmp19;
+        double tmp24 = -tmp22;
+        double tmp25 = tmp21;
+        double tmp26 = -tmp20;
         s.Ni = tmp21 * q.P1.y - 0.5 * tmp19 * tmp3 - tmp20 * q.P1.z - tmp22 * q.P1.x;
+        s.No = tmp23;
+        s.E1 = tmp24;
+        s.E2 = tmp25;
+        s.E3 = tmp26;
         #endregion
     }
 

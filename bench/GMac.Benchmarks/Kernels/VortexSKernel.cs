@@ -48,9 +48,11 @@ public sealed class VortexSKernel : GaKernel<VortexInput, Vec3>
         //GMac.Bind("gamma.1", "<x.Gamma>");
         //GMac.Bind("v", "Vector3D", "v");
         double tmp0 = x.Omega * (x.A.z * x.P.z + x.A.y * x.P.y + x.A.x * x.P.x) / (x.A.x * x.A.x + x.A.y * x.A.y + x.A.z * x.A.z);
-        v.x = x.A.x * tmp0 + x.Gamma * (x.P.z * x.A.y - x.P.y * x.A.z);
-        v.y = x.A.y * tmp0 + x.Gamma * (x.P.x * x.A.z - x.P.z * x.A.x);
+        double tmp1 = x.A.x * tmp0 + x.Gamma * (x.P.z * x.A.y - x.P.y * x.A.z);
+        double tmp2 = x.A.y * tmp0 + x.Gamma * (x.P.x * x.A.z - x.P.z * x.A.x);
         v.z = x.A.z * tmp0 + x.Gamma * (x.P.y * x.A.x - x.P.x * x.A.y);
+        v.x = tmp1;
+        v.y = tmp2;
         #endregion
     }
 

@@ -1,3 +1,4 @@
+using System.Text.RegularExpressions;
 using GMac.Core.Numerics;
 using GMac.Dsl.Generation;
 using Microsoft.CodeAnalysis;
@@ -13,7 +14,7 @@ namespace GMac.CSharp.BindingPoints;
 /// other expression is bare C#. This is the one reader of the syntax: gmac and the benchmark
 /// report both go through it.
 /// </summary>
-public static class BindingLineReader
+public static partial class BindingLineReader
 {
     public const string LinePrefix = "//GMac.";
 
@@ -22,14 +23,20 @@ public static class BindingLineReader
 
     /// <summary>
     /// Reads a line of a C# file (its terminator may be included); null when it is not a binding
-    /// line. <paramref name="lineNumber"/> is 1-based and goes into the spec for diagnostics.
+    /// line, an error result when it only looks like one (<c>// GMac.Bind</c>). <paramref name="lineNumber"/> is 1-based and goes into the spec for diagnostics.
     /// </summary>
     public static BindingLineResult? Read(string sourceLine, int lineNumber)
     {
         var text = sourceLine.TrimEnd('\r', '\n');
         var trimmed = text.TrimStart();
-        if (!trimmed.StartsWith(LinePrefix, StringComparison.Ordinal)) return null;
         var column = text.Length - trimmed.Length + 1;
+        if (!trimmed.StartsWith(LinePrefix, StringComparison.Ordinal))
+        {
+            // Deleted with the generated code, such a line would lose its binding without a word.
+            return NearMiss().IsMatch(trimmed)
+                ? new BindingLineResult(lineNumber, column, null, $"'{trimmed.TrimEnd()}' looks like a GMac line but is not one: a GMac line starts exactly with '{LinePrefix}' (two slashes, no space, that case)")
+                : null;
+        }
         var spec = ReadCall(trimmed[2..], lineNumber, column, out var error);
         return new BindingLineResult(lineNumber, column, spec, error);
     }
@@ -68,7 +75,7 @@ public static class BindingLineReader
                 }
                 var value = StringValue(args[1]);
                 var text = value ?? args[1].Expression.ToString();
-                return new CoefficientBindingSpec(name[..dot].Trim(), name[(dot + 1)..].Trim(), text, value is not null, line, column);
+                return new CoefficientBindingSpec(name[..dot].Trim(), name[(dot + 1)..].Trim(), BindingValueReader.Read(text, quoted: value is not null), line, column);
             }
             case "Bind" when args.Count == 3:
             {
@@ -80,7 +87,7 @@ public static class BindingLineReader
                     return null;
                 }
                 var target = StringValue(args[2]) ?? args[2].Expression.ToString();
-                return new ClassBindingSpec(parameter.Trim(), binding.Trim(), target, line, column);
+                return BindingValueReader.ClassBinding(parameter.Trim(), binding.Trim(), target, line, column);
             }
             case "Bind":
                 error = $"GMac.Bind takes 2 or 3 arguments, not {args.Count}";
@@ -117,6 +124,10 @@ public static class BindingLineReader
         if (t.StartsWith(';')) t = t[1..].TrimStart();
         return t.Length == 0 || t.StartsWith("//", StringComparison.Ordinal);
     }
+
+    /// <summary>A comment that starts like a GMac line with other slashes, spaces or case: <c>// GMac.</c>, <c>///GMac.</c>, <c>//Gmac.</c>.</summary>
+    [GeneratedRegex(@"^/{2,}\s*gmac\s*\.", RegexOptions.IgnoreCase | RegexOptions.CultureInvariant)]
+    private static partial Regex NearMiss();
 
     private static string? StringValue(ArgumentSyntax argument) =>
         argument.Expression is LiteralExpressionSyntax literal && literal.IsKind(SyntaxKind.StringLiteralExpression) ? literal.Token.ValueText : null;

@@ -108,7 +108,7 @@ internal static class BindingPointGenerator
         GenerationOutcome outcome;
         try
         {
-            outcome = BindingTextCheck.Generate(context, point.MacroName, point.Specs, point.RegionLineNumber, file.Path);
+            outcome = MacroGeneration.Generate(context, point.MacroName, point.Specs, point.RegionLineNumber, file.Path);
         }
         catch (Exception e) when (e is not OutOfMemoryException)
         {
@@ -135,6 +135,7 @@ internal static class BindingPointGenerator
                 IsNameTaken = isTaken,
                 ScalarType = scalarType,
                 DeclareOutputs = outcome.Plan?.DefaultOutputs ?? false,
+                MayOverwrite = BindingExpressions.Overwrites(outcome.Result.Block, point.Scope.Storage),
             });
             return new GeneratedRegion(point, outcome, code) { ScalarType = scalarType };
         }

@@ -124,7 +124,7 @@ internal static partial class BindingPointReader
     {
         var text = spec switch
         {
-            CoefficientBindingSpec c => c.Value,
+            CoefficientBindingSpec c => c.Value.Text,
             ClassBindingSpec c => c.Target,
             AssumptionSpec a => a.Expression,
             _ => "",

@@ -1,4 +1,3 @@
-using GMac.Core.Numerics;
 using GMac.Dsl.Generation;
 using GMac.Dsl.Semantics;
 using Microsoft.CodeAnalysis;
@@ -18,14 +17,6 @@ namespace GMac.CSharp.BindingPoints;
 /// </summary>
 internal static class BindingTextCheck
 {
-    /// <summary>Generates after checking the bindings' C# text; both <c>generate</c> and <c>show</c> go through here.</summary>
-    public static GenerationOutcome Generate(GenerationContext context, string macroName, IReadOnlyList<BindingSpec> specs, int regionLine, string filePath)
-    {
-        if (context.Project.Model.Macros.TryGetValue(macroName, out var macro) && Check(macro, specs, filePath) is { Count: > 0 } errors)
-            return new GenerationOutcome(null, errors, null);
-        return context.Generator.Generate(macroName, specs, regionLine, filePath);
-    }
-
     /// <summary>One error per binding whose C# text cannot be pasted as it is, at the binding's line and column.</summary>
     public static List<Diagnostic> Check(MacroSymbol macro, IEnumerable<BindingSpec> specs, string filePath)
     {
@@ -35,7 +26,7 @@ internal static class BindingTextCheck
         {
             var problem = spec switch
             {
-                CoefficientBindingSpec c when outputs.Contains(c.Parameter) => OutputProblem(c.Parameter, c.IsTemplate ? TemplateTarget(c.Value) : c.Value.Trim(), c.Value),
+                CoefficientBindingSpec c when outputs.Contains(c.Parameter) => OutputProblem(c.Parameter, c.Value.Target, c.Value.Text),
                 CoefficientBindingSpec c => InputProblem(c),
                 ClassBindingSpec c => ObjectProblem(c.Target) is { } objectProblem ? (DiagnosticCodes.NotAnExpression, objectProblem)
                     : outputs.Contains(c.Parameter) ? OutputProblem(c.Parameter, c.Target.Trim(), c.Target) : null,
@@ -52,13 +43,21 @@ internal static class BindingTextCheck
             return (DiagnosticCodes.NotAnExpression, $"the target '{target}' of output '{parameter}' is not one C# expression: {problem}");
         if (target is null || !IsAssignable(target))
             return (DiagnosticCodes.TargetNotAssignable, $"output '{parameter}' is bound to '{text}', which cannot be assigned; use a variable, field, property or element, e.g. \"<w.x>\"");
+        // Each coefficient is a separate assignment: a call or increment in the target would run at each one.
+        if (BindingExpressions.HasEffects(target))
+            return (DiagnosticCodes.TargetHasEffects, $"the target '{target}' of output '{parameter}' would be evaluated at every coefficient written (it calls, assigns or increments); bind a variable and copy it afterwards");
         return null;
     }
 
-    /// <summary>Each &lt;…&gt; part of a template, or the whole of a bare value that is not a number.</summary>
+    /// <summary>Each hole of a template, or the whole of a bare value that is not a number.</summary>
     private static (DiagnosticDescriptor Descriptor, string Message)? InputProblem(CoefficientBindingSpec c)
     {
-        var parts = c.IsTemplate ? TemplateParts(c.Value) : Rational.TryParse(c.Value.Trim(), out _) ? [] : [c.Value];
+        var parts = c.Value switch
+        {
+            TemplateValue t => t.Holes.Select(h => h.Text).ToList(),
+            HostExpression h => [h.Text],
+            _ => new List<string>(),
+        };
         foreach (var part in parts)
             if (ExpressionProblem(part) is { } problem)
                 return (DiagnosticCodes.NotAnExpression, $"'{part.Trim()}' bound to input '{c.Parameter}' is not one C# expression: {problem}");
@@ -94,33 +93,5 @@ internal static class BindingTextCheck
         while (expression is ParenthesizedExpressionSyntax p) expression = p.Expression;
         return expression is IdentifierNameSyntax or ElementAccessExpressionSyntax
             || expression is MemberAccessExpressionSyntax m && m.IsKind(SyntaxKind.SimpleMemberAccessExpression) || expression.IsKind(SyntaxKind.PointerMemberAccessExpression);
-    }
-
-    /// <summary>"&lt;wx&gt;" → "wx"; anything else is no target.</summary>
-    private static string? TemplateTarget(string text)
-    {
-        text = text.Trim();
-        return text.Length > 2 && text[0] == '<' && text[^1] == '>' && text.IndexOf('<', 1) < 0 ? text[1..^1].Trim() : null;
-    }
-
-    /// <summary>The texts between '&lt;' and its matching '&gt;' (nesting allowed, as the generator reads them); unbalanced text is left to it.</summary>
-    private static List<string> TemplateParts(string text)
-    {
-        var parts = new List<string>();
-        for (var i = 0; i < text.Length; i++)
-        {
-            if (text[i] != '<') continue;
-            var depth = 0;
-            var close = -1;
-            for (var j = i; j < text.Length && close < 0; j++)
-            {
-                if (text[j] == '<') depth++;
-                else if (text[j] == '>' && --depth == 0) close = j;
-            }
-            if (close < 0) break;
-            parts.Add(text[(i + 1)..close]);
-            i = close;
-        }
-        return parts;
     }
 }

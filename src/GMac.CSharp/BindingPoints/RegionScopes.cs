@@ -25,8 +25,49 @@ internal sealed class RegionScopes(SyntaxNode root, IReadOnlyList<(int Start, in
         var names = Identifiers(node);
         foreach (var type in node.AncestorsAndSelf().OfType<TypeDeclarationSyntax>())
             names.UnionWith(DeclaredNames(type));
-        return _byMember[id] = new RegionScope(id, names);
+        var (parameters, locals, plain) = (new HashSet<string>(StringComparer.Ordinal), new HashSet<string>(StringComparer.Ordinal), new HashSet<string>(StringComparer.Ordinal));
+        Classify(node.DescendantNodesAndSelf(), parameters, locals, plain);
+        // Around the member: primary-constructor parameters and fields (a pointer or ref field may point anywhere).
+        foreach (var type in node.AncestorsAndSelf().OfType<TypeDeclarationSyntax>())
+            Classify([.. type.ParameterList?.Parameters ?? [], .. type.Members.OfType<BaseFieldDeclarationSyntax>().Select(f => f.Declaration)], locals, locals, []);
+        return _byMember[id] = new RegionScope(id, names) { Storage = new StorageNames(parameters, locals, plain) };
     }
+
+    /// <summary>
+    /// Sorts declared names: parameters by reference (ref, in, out) or of pointer or span type; locals
+    /// of such kinds (ref locals, pointers, spans, addresses); plain locals and by-value parameters.
+    /// </summary>
+    private static void Classify(IEnumerable<SyntaxNode> nodes, HashSet<string> referenceParameters, HashSet<string> referenceLocals, HashSet<string> plain)
+    {
+        foreach (var n in nodes)
+        {
+            switch (n)
+            {
+                case ParameterSyntax p:
+                    (p.Modifiers.Any(m => m.Kind() is SyntaxKind.RefKeyword or SyntaxKind.OutKeyword or SyntaxKind.InKeyword) || IsReferenceLike(p.Type) ? referenceParameters : plain)
+                        .Add(p.Identifier.ValueText);
+                    break;
+                case VariableDeclarationSyntax d:
+                    foreach (var v in d.Variables)
+                        (IsReferenceLike(d.Type) || v.Initializer?.Value is RefExpressionSyntax or StackAllocArrayCreationExpressionSyntax
+                            || v.Initializer?.Value is PrefixUnaryExpressionSyntax { RawKind: (int)SyntaxKind.AddressOfExpression } ? referenceLocals : plain)
+                            .Add(v.Identifier.ValueText);
+                    break;
+                case ForEachStatementSyntax f:
+                    (IsReferenceLike(f.Type) ? referenceLocals : plain).Add(f.Identifier.ValueText);
+                    break;
+            }
+        }
+    }
+
+    private static bool IsReferenceLike(TypeSyntax? type) => type switch
+    {
+        RefTypeSyntax or PointerTypeSyntax or FunctionPointerTypeSyntax => true,
+        ScopedTypeSyntax => true,
+        QualifiedNameSyntax q => IsReferenceLike(q.Right),
+        GenericNameSyntax g => g.Identifier.ValueText.EndsWith("Span", StringComparison.Ordinal) || g.Identifier.ValueText.EndsWith("Memory", StringComparison.Ordinal),
+        _ => false,
+    };
 
     private HashSet<string> Identifiers(SyntaxNode node) => node.DescendantTokens()
         .Where(t => t.IsKind(SyntaxKind.IdentifierToken) && !bodies.Any(b => t.SpanStart >= b.Start && t.SpanStart < b.End))

@@ -24,6 +24,13 @@ public sealed record CSharpEmitOptions
     /// </summary>
     public bool DeclareOutputs { get; init; }
 
+    /// <summary>
+    /// Whether writing an output (by its key in <see cref="CodeBlock.OutputTargets"/>) may change what
+    /// an input (by its name in <see cref="CodeBlock.InputText"/>) reads; such an output is held until
+    /// no statement reads the input any more. Null: decided on the names in their texts, an approximation.
+    /// </summary>
+    public Func<string, string, bool>? MayOverwrite { get; init; }
+
     /// <summary>Names already used where the code goes; temporaries avoid them.</summary>
     public Func<string, bool> IsNameTaken { get; init; } = _ => false;
 }

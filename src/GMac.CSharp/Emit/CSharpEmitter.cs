@@ -21,18 +21,27 @@ public static partial class CSharpEmitter
         };
         var temps = block.Temporaries.Select(t => t.Target).Distinct().ToList();
         // The block's own C# text (bound inputs and output targets) names things the temporaries must not hide.
-        var bound = block.InputText.Values.Concat(block.OutputTargets.Values)
+        var bound = block.InputText.Values.Concat(block.OutputTargets.Values).Concat(block.EvaluatedOnce)
             .SelectMany(text => IdentifierLike().Matches(text).Select(m => m.Value.TrimStart('@')))
             .ToHashSet(StringComparer.Ordinal);
         bool IsFree(string name) => !bound.Contains(name) && !options.IsNameTaken(name);
-        var held = HeldOutputs(block);
-        var prefix = CandidatePrefixes().First(p => Enumerable.Range(0, temps.Count + held.Count).All(i => IsFree($"{p}{i}")));
+        var held = HeldOutputs(block, options.MayOverwrite);
+        var once = block.EvaluatedOnce;
+        var prefix = CandidatePrefixes().First(p => Enumerable.Range(0, temps.Count + held.Count + once.Count).All(i => IsFree($"{p}{i}")));
         var tempName = temps.Select((t, i) => (t, i)).ToDictionary(x => x.t, x => $"{prefix}{x.i}", StringComparer.Ordinal);
+        var onceNames = once.Select((_, k) => $"{prefix}{temps.Count + held.Count + k}").ToList();
         var deferred = new List<(string Target, string Value)>();
+
+        string InputText(string input)
+        {
+            input = input.Trim();
+            for (var k = 0; k < once.Count; k++) input = input.Replace(CodeBlock.EvaluatedOnceMarker(k), onceNames[k], StringComparison.Ordinal);
+            return IsSimple(input) ? input : $"({input})";
+        }
 
         string VariableText(string name) =>
             tempName.TryGetValue(name, out var t) ? t
-            : block.InputText.TryGetValue(name, out var input) ? (IsSimple(input) ? input.Trim() : $"({input.Trim()})")
+            : block.InputText.TryGetValue(name, out var input) ? InputText(input)
             : throw new InvalidOperationException($"'{name}' is neither an input nor a temporary of the block.");
 
         string Print(Expr e) => single
@@ -47,6 +56,9 @@ public static partial class CSharpEmitter
         var sb = new StringBuilder();
         if (options.IncludeStatistics)
             sb.Append(options.Indent).Append("// GMac: ").Append(block.Statistics()).Append(options.NewLine);
+        // Expressions with effects (calls, increments) run once, in binding order, before anything is written.
+        for (var k = 0; k < once.Count; k++)
+            sb.Append(options.Indent).Append("var ").Append(onceNames[k]).Append(" = ").Append(once[k].Trim()).Append(';').Append(options.NewLine);
         var declared = new HashSet<string>(StringComparer.Ordinal);
         var sinCos = new SinCosPairs(block);
         foreach (var s in block.Statements)
@@ -97,29 +109,46 @@ public static partial class CSharpEmitter
     /// <summary>
     /// Outputs whose target may be the storage of an input read after them: written in place, they
     /// would change that input under the statements still to read it (<c>a = a × b</c> bound to one
-    /// variable). Their values are held in temporaries and written after the last statement. The
-    /// test is on the text: the target's leading name is one of the variables (names not after a
-    /// dot, so not members) that such an input's text reads.
+    /// variable). Their values are held in temporaries and written after the last statement.
+    /// <paramref name="mayOverwrite"/> decides for an output and an input; without it, the names in
+    /// their texts do.
     /// </summary>
-    private static HashSet<AssignmentStatement> HeldOutputs(CodeBlock block)
+    private static HashSet<AssignmentStatement> HeldOutputs(CodeBlock block, Func<string, string, bool>? mayOverwrite)
     {
         var held = new HashSet<AssignmentStatement>(ReferenceEqualityComparer.Instance);
-        var namesReadLater = new HashSet<string>(StringComparer.Ordinal);
+        var readLater = new HashSet<string>(StringComparer.Ordinal);
         for (var i = block.Statements.Count - 1; i >= 0; i--)
         {
             var s = block.Statements[i];
-            if (s is AssignmentStatement { IsOutput: true } o
-                && RootName().Match(block.OutputTargets[o.Target]) is { Success: true } root
-                && namesReadLater.Contains(root.Value.TrimStart('@')))
+            if (s is AssignmentStatement { IsOutput: true } o && readLater.Any(input => (mayOverwrite ?? SharesRootName(block))(o.Target, input)))
                 held.Add(o);
             foreach (var e in s.Expressions)
             foreach (var v in e.DescendantsAndSelf().OfType<VariableExpr>())
-                if (block.InputText.TryGetValue(v.Name, out var text))
-                    foreach (Match m in RootName().Matches(text))
-                        namesReadLater.Add(m.Value.TrimStart('@'));
+                if (block.InputText.ContainsKey(v.Name))
+                    readLater.Add(v.Name);
         }
         return held;
     }
+
+    /// <summary>
+    /// The fallback when no decision is given: whether the target's variable (its first name, after
+    /// <c>this.</c>) is one the input's text reads. A textual approximation; gmac decides on the parsed syntax.
+    /// </summary>
+    private static Func<string, string, bool> SharesRootName(CodeBlock block) => (output, input) =>
+    {
+        var target = RootNames(block.OutputTargets[output]).FirstOrDefault();
+        return target is null || RootNames(block.InputText[input]).Contains(target);
+    };
+
+    private static IEnumerable<string> RootNames(string text) =>
+        RootName().Matches(ThisAccess().Replace(text, "")).Select(m => m.Value.TrimStart('@')).Where(n => n is not ("this" or "base"));
+
+    /// <summary>A name that is not a member: not right after a dot or an arrow, and starting an identifier.</summary>
+    [GeneratedRegex(@"(?<!(\.|->)\s*)(?<![\p{L}\p{N}_@])@?[\p{L}_][\p{L}\p{N}_]*")]
+    private static partial Regex RootName();
+
+    [GeneratedRegex(@"\b(this|base)\s*\.\s*")]
+    private static partial Regex ThisAccess();
 
     /// <summary>
     /// The preferred prefixes, then <c>tmp_1_</c>, <c>tmp_2_</c>, …: each taken name rules out at most
@@ -159,10 +188,6 @@ public static partial class CSharpEmitter
     [GeneratedRegex(@"\r\n|\r|\n")]
     private static partial Regex LineBreak();
 
-    /// <summary>A name that is not a member access: not right after a dot, and starting an identifier.</summary>
-    [GeneratedRegex(@"(?<!\.\s*)(?<![A-Za-z0-9_@])@?[A-Za-z_][A-Za-z0-9_]*")]
-    private static partial Regex RootName();
-
-    [GeneratedRegex(@"^(@?[A-Za-z_][A-Za-z0-9_]*(\s*\.\s*@?[A-Za-z_][A-Za-z0-9_]*|\s*\[[^\[\]]*\])*|[0-9]+(\.[0-9]+)?([eE][+-]?[0-9]+)?[dD]?)$")]
+    [GeneratedRegex(@"^(@?[\p{L}_][\p{L}\p{N}_]*(\s*\.\s*@?[\p{L}_][\p{L}\p{N}_]*|\s*\[[^\[\]]*\])*|[0-9]+(\.[0-9]+)?([eE][+-]?[0-9]+)?[dD]?)$")]
     private static partial Regex SimpleExpression();
 }

@@ -2,6 +2,7 @@ using System.Reflection;
 using System.Runtime.Loader;
 using System.Text;
 using GMac.Core.CodeGeneration;
+using GMac.CSharp.BindingPoints;
 using GMac.CSharp.Emit;
 using Microsoft.CodeAnalysis;
 using Microsoft.CodeAnalysis.CSharp;
@@ -23,15 +24,32 @@ internal static class KernelCompiler
             .ToArray();
     });
 
-    /// <summary>The block with inputs and outputs moved to array slots (verbatim output text dropped).</summary>
-    public static (CodeBlock Block, List<string> Inputs, List<string> Outputs) Remap(CodeBlock block, IEnumerable<string> inputNames)
+    /// <summary>
+    /// The block with inputs and outputs moved to array slots (verbatim output text dropped). An output
+    /// bound to the same storage as an input shares its slot, and holding outputs back is decided on the
+    /// original texts (<paramref name="names"/> as in the region's scope), so the kernel runs the
+    /// code as it is written into the file, with the aliasing it has there.
+    /// </summary>
+    public static KernelBlock Remap(CodeBlock block, IEnumerable<string> inputNames, StorageNames? names = null)
     {
         var inputs = inputNames.ToList();
         var outputs = block.OutputTargets.Keys.Order(StringComparer.Ordinal).ToList();
         var inputText = inputs.Select((name, i) => (name, i)).ToDictionary(x => x.name, x => $"__in[{x.i}]", StringComparer.Ordinal);
-        var outputText = outputs.Select((name, j) => (name, j)).ToDictionary(x => x.name, x => $"__out[{x.j}]", StringComparer.Ordinal);
+        var inPlace = new Dictionary<int, int>();
+        var outputText = new Dictionary<string, string>(StringComparer.Ordinal);
+        for (var j = 0; j < outputs.Count; j++)
+        {
+            var target = block.OutputTargets[outputs[j]];
+            var slot = inputs.FindIndex(name => block.InputText.TryGetValue(name, out var text) && BindingExpressions.SameStorage(target, text));
+            if (slot >= 0) inPlace[j] = slot;
+            outputText[outputs[j]] = slot >= 0 ? $"__in[{slot}]" : $"__out[{j}]";
+        }
         var statements = block.Statements.Where(s => s is not VerbatimStatement);
-        return (new CodeBlock(statements, inputText, outputText), inputs, outputs);
+        return new KernelBlock(new CodeBlock(statements, inputText, outputText), inputs, outputs)
+        {
+            MayOverwrite = BindingExpressions.Overwrites(block, names),
+            InPlace = inPlace,
+        };
     }
 
     /// <summary>
@@ -39,11 +57,11 @@ internal static class KernelCompiler
     /// the compiler's first error for each block.
     /// </summary>
     /// <param name="scalarTypes">The scalar type of each block (<c>double</c> or <c>float</c>); all double when null.</param>
-    public static IReadOnlyList<(CompiledKernel? Kernel, string? Error)> Compile(IReadOnlyList<(CodeBlock Block, List<string> Inputs, List<string> Outputs)> blocks,
+    public static IReadOnlyList<(CompiledKernel? Kernel, string? Error)> Compile(IReadOnlyList<KernelBlock> blocks,
         IReadOnlyList<string>? scalarTypes = null)
     {
         string TypeOf(int k) => scalarTypes?[k] ?? "double";
-        var sources = blocks.Select((b, k) => Source(b.Block, k, TypeOf(k))).ToList();
+        var sources = blocks.Select((b, k) => Source(b, k, TypeOf(k))).ToList();
         if (TryCompile(sources, out var assembly, out _))
             return blocks.Select((b, k) => ((CompiledKernel?)Load(assembly!, k, b.Inputs, b.Outputs, TypeOf(k)), (string?)null)).ToList();
         // Something does not compile: find which, one block at a time.
@@ -52,12 +70,14 @@ internal static class KernelCompiler
             : (null, error)).ToList();
     }
 
-    private static string Source(CodeBlock block, int index, string scalarType)
+    private static string Source(KernelBlock kernel, int index, string scalarType)
     {
-        var body = CSharpEmitter.Emit(block, new CSharpEmitOptions
+        var body = CSharpEmitter.Emit(kernel.Block, new CSharpEmitOptions
         {
             Indent = "        ", NewLine = "\n", ScalarType = scalarType, IsNameTaken = n => n.StartsWith("__", StringComparison.Ordinal),
+            MayOverwrite = kernel.MayOverwrite,
         });
+        foreach (var (output, input) in kernel.InPlace) body += $"        __out[{output}] = __in[{input}];\n";
         var sb = new StringBuilder();
         sb.Append("public static class GMacVerify").Append(index).Append("\n{\n");
         sb.Append("    public static void Run(").Append(scalarType).Append("[] __in, ").Append(scalarType).Append("[] __out)\n    {\n");

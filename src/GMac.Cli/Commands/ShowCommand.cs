@@ -87,7 +87,7 @@ internal static class ShowCommand
         try
         {
             // The specs come from options, not a file: their "line" is the option's number.
-            outcome = BindingTextCheck.Generate(context, macro, specs, 0, filePath: "");
+            outcome = MacroGeneration.Generate(context, macro, specs, 0, filePath: "");
         }
         catch (Exception e) when (e is not OutOfMemoryException)
         {
@@ -111,6 +111,7 @@ internal static class ShowCommand
             ScalarType = scalarType,
             // Outputs no --bind names get default names, declared as the region would declare them.
             DeclareOutputs = outcome.Plan?.DefaultOutputs ?? false,
+            MayOverwrite = BindingExpressions.Overwrites(outcome.Result.Block),
         }));
         return ExitCodes.Success;
     }
@@ -128,9 +129,9 @@ internal static class ShowCommand
         if (dot < 0)
         {
             var colon = value.IndexOf(':');
-            return colon <= 0 || colon == value.Length - 1 ? null : new ClassBindingSpec(name, value[..colon].Trim(), value[(colon + 1)..].Trim(), index, 1);
+            return colon <= 0 || colon == value.Length - 1 ? null : BindingValueReader.ClassBinding(name, value[..colon].Trim(), value[(colon + 1)..].Trim(), index, 1);
         }
         if (dot == 0 || dot == name.Length - 1) return null;
-        return new CoefficientBindingSpec(name[..dot], name[(dot + 1)..], value, value.Contains('<'), index, 1);
+        return new CoefficientBindingSpec(name[..dot], name[(dot + 1)..], BindingValueReader.ReadCommandLine(value), index, 1);
     }
 }

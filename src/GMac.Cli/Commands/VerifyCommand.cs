@@ -73,7 +73,7 @@ internal static class VerifyCommand
             failures++;
         }
 
-        var remapped = regions.Select(r => KernelCompiler.Remap(r.Region.Outcome!.Result!.Block, r.Region.Outcome.Plan!.InputTexts.Keys)).ToList();
+        var remapped = regions.Select(r => KernelCompiler.Remap(r.Region.Outcome!.Result!.Block, r.Region.Outcome.Plan!.InputTexts.Keys, r.Region.Point.Scope.Storage)).ToList();
         var kernels = KernelCompiler.Compile(remapped, regions.Select(r => r.Region.ScalarType).ToList());
         var passed = 0;
         for (var k = 0; k < regions.Count; k++)
@@ -122,8 +122,7 @@ internal static class VerifyCommand
                 switch (spec)
                 {
                     case CoefficientBindingSpec c when c.Parameter == input.Name:
-                        var t = c.Value.Trim();
-                        texts.Add(c.IsTemplate && t.StartsWith('<') && t.EndsWith('>') ? t[1..^1].Trim() : t);
+                        texts.Add(c.Value is TemplateValue { SingleHole: { } hole } ? hole.Text.Trim() : c.Value.Text.Trim());
                         break;
                     case ClassBindingSpec c when c.Parameter == input.Name:
                         foreach (var text in plan.InputTexts.Values.Where(v => v.StartsWith(c.Target.Trim() + ".", StringComparison.Ordinal))) texts.Add(text);

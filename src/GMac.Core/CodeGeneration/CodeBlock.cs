@@ -22,7 +22,16 @@ public sealed class CodeBlock
         OutputTargets = outputTargets;
     }
 
-    public CodeBlock WithStatements(IEnumerable<CodeStatement> statements) => new(statements, InputText, OutputTargets);
+    /// <summary>
+    /// Target-language expressions evaluated once, in order, before the statements (calls and other
+    /// expressions with effects): input texts refer to the <c>i</c>-th by <see cref="EvaluatedOnceMarker"/>.
+    /// </summary>
+    public IReadOnlyList<string> EvaluatedOnce { get; init; } = [];
+
+    /// <summary>The placeholder for the value of <see cref="EvaluatedOnce"/>[<paramref name="index"/>] in input texts; no C# text contains it.</summary>
+    public static string EvaluatedOnceMarker(int index) => $"\u0001{index}\u0001";
+
+    public CodeBlock WithStatements(IEnumerable<CodeStatement> statements) => new(statements, InputText, OutputTargets) { EvaluatedOnce = EvaluatedOnce };
 
     private int? _structureHash;
 

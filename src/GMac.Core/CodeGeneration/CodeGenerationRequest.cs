@@ -17,4 +17,7 @@ public sealed record CodeGenerationRequest(
     public Func<Scalar, Scalar>? Simplify { get; init; }
 
     public JoinMode Join { get; init; } = JoinMode.Automatic;
+
+    /// <summary>Expressions evaluated once before the code; see <see cref="CodeBlock.EvaluatedOnce"/>.</summary>
+    public IReadOnlyList<string> EvaluatedOnce { get; init; } = [];
 }

@@ -160,7 +160,7 @@ public static class CodeGenerator
             statements.Add(new AssignmentStatement(a.Name, GenerationProfile.Time("lowering", () => Lower(a.Value, a.IsOutput ? $"output {a.Name}" : $"temporary {a.Name}")), a.IsOutput));
             known.Add(a.Name);
         }
-        var block = new CodeBlock(statements, request.InputText, request.OutputTargets);
+        var block = new CodeBlock(statements, request.InputText, request.OutputTargets) { EvaluatedOnce = request.EvaluatedOnce };
         return sharedCostLimit < long.MaxValue && Rewrites.SharedCost.Of(block) > sharedCostLimit ? null : block;
     }
 }

@@ -116,6 +116,9 @@ public sealed partial class MacroCodeGenerator
             assumptions = WithBound(assumptions, variable, a.Expression, a.Value, a.IsMinimum, a, errors);
         }
         if (errors.Count > 0) return null;
+        // Only once the lines themselves are right: a mistyped blade would otherwise also leave its coefficient unbound.
+        UnboundInputs(macro, inputValues, regionLine, errors);
+        if (errors.Count > 0) return null;
         // Binding only inputs is enough: every output coefficient then goes to its default name.
         var defaultOutputs = outputs.Count == 0;
         if (defaultOutputs)
@@ -123,7 +126,7 @@ public sealed partial class MacroCodeGenerator
                 BindCoefficient(macro, (CoefficientBindingSpec)spec with { Line = regionLine, Column = 1 }, atoms, inputValues, outputs, outputTargets, errors);
         if (errors.Count > 0) return null;
 
-        // A variable coefficient that no binding supplies is zero.
+        // Every variable coefficient is bound (checked above); class constants come from the class.
         var inputs = MacroInputs.Build(_frames, SymbolicDomain.Instance, macro, (input, blade) => inputValues.GetValueOrDefault((input, blade), Scalar.Zero));
         var relations = MacroCompiler.NormalizationRelations(macro, inputs, SideRelations.Trigonometric);
         assumptions = assumptions.WithRelations(relations);
@@ -151,11 +154,44 @@ public sealed partial class MacroCodeGenerator
         {
             Simplify = s => _cas.Simplify(s, assumptions),
             Join = join,
+            EvaluatedOnce = atoms.EvaluatedOnce,
         };
-        return new BindingPointPlan(macro, request, atoms.Texts, values => NumericReference(macro, inputValues, outputs, values))
+        return new BindingPointPlan(macro, request, atoms.DisplayTexts(), values => NumericReference(macro, inputValues, outputs, values))
         {
             DefaultOutputs = defaultOutputs,
         };
+    }
+
+    /// <summary>
+    /// Inputs that would silently be zero where the user meant a value (a forgotten or mistyped line):
+    /// an input no line binds at all, and a coefficient left out of a grade whose other coefficients
+    /// are bound (v.e1 and v.e2 without v.e3). Grades left out as a whole are zero: binding a vector to
+    /// a general multivector (u.e1, u.e2, u.e3, or a Vector3D class binding) means its other grades
+    /// are zero. A zero is bound by writing it, //GMac.Bind("v.e3", "0").
+    /// </summary>
+    private void UnboundInputs(MacroSymbol macro, Dictionary<(VariableSymbol, int), Scalar> inputValues, int regionLine, List<Diagnostic> errors)
+    {
+        foreach (var input in macro.Inputs)
+        {
+            var frame = _frames[input.Class!.Frame];
+            string Key(int id) => $"'{input.Name}.{frame.BladeName(new BasisBlade(id))}'";
+            var blades = input.Class.VariableBlades.Order().ToList();
+            var bound = blades.Where(id => inputValues.ContainsKey((input, id))).ToList();
+            if (blades.Count == 0) continue;
+            if (bound.Count == 0)
+            {
+                errors.Add(Problem(DiagnosticCodes.UnboundInput,
+                    $"input '{input.Name}' of macro '{macro.Name}' is bound by no line; bind it (e.g. //GMac.Bind(\"{input.Name}\", \"<class binding>\", obj)), " +
+                    $"or write its coefficients {string.Join(", ", blades.Select(Key))} as \"0\" to mean zero", regionLine, 1));
+                continue;
+            }
+            var grades = bound.Select(id => System.Numerics.BitOperations.PopCount((uint)id)).ToHashSet();
+            var missing = blades.Where(id => !bound.Contains(id) && grades.Contains(System.Numerics.BitOperations.PopCount((uint)id))).ToList();
+            if (missing.Count == 0) continue;
+            errors.Add(Problem(DiagnosticCodes.UnboundInput,
+                $"input coefficient{(missing.Count > 1 ? "s" : "")} {string.Join(", ", missing.Select(Key))} of macro '{macro.Name}' {(missing.Count > 1 ? "are" : "is")} bound by no line, " +
+                $"though other coefficients of {(missing.Count > 1 ? "their" : "its")} grade are; bind {(missing.Count > 1 ? "them" : "it")}, or write \"0\" to mean zero", regionLine, 1));
+        }
     }
 
     /// <summary>

@@ -82,4 +82,14 @@ public sealed class Generate_BindTextChecks : IDisposable
         Assert.Equal("", output);
         Assert.Contains("--bind " + binding, err);
     }
+
+    /// <summary><c>&lt;p->x&gt;</c>: the '>' of a pointer member access does not close the template.</summary>
+    [Fact]
+    public void Pointer_member_access_is_an_input_as_it_is_an_output()
+    {
+        var path = _temp.Write("Checked.cs", FileWith("//GMac.Bind(\"v.e2\", \"<p->y>\");"));
+        var (exit, _, err) = Tool.Generate([path]);
+        Assert.True(exit == 0, err);
+        Assert.Contains("p->y", File.ReadAllText(path).Split("//GMac.Bind(\"v.e3\"")[1]);
+    }
 }

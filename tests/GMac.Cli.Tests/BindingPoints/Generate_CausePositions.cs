@@ -32,6 +32,8 @@ public sealed class Generate_CausePositions : IDisposable
                 {
                     #region GMac : DivZero
                     //GMac.Bind("x.e1", "<a>");
+                    //GMac.Bind("x.e2", "0");
+                    //GMac.Bind("x.e3", "0");
                     //GMac.Bind("w.e1", "<b>");
                     #endregion
                 }

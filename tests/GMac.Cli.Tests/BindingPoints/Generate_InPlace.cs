@@ -1,7 +1,4 @@
-using System.Reflection;
 using GMac.Cli.Tests.Support;
-using Microsoft.CodeAnalysis;
-using Microsoft.CodeAnalysis.CSharp;
 
 namespace GMac.Cli.Tests.BindingPoints;
 
@@ -16,7 +13,7 @@ public sealed class Generate_InPlace
     [Fact]
     public void Cross_product_into_its_own_first_operand()
     {
-        var kernel = Kernel.Compile("NormalToVectors", ["u=Vector3D:a", "v=Vector3D:b", "w=Vector3D:a"], "public static V[] Run(V a, V b) { CODE return new[] { a }; }");
+        var kernel = ShownKernel.Compile("NormalToVectors", ["u=Vector3D:a", "v=Vector3D:b", "w=Vector3D:a"], "public static V[] Run(V a, V b) { CODE return new[] { a }; }");
         var random = new Random(7);
         for (var i = 0; i < 20; i++)
         {
@@ -31,9 +28,9 @@ public sealed class Generate_InPlace
     [Fact]
     public void Gram_schmidt_by_rejection_into_its_own_inputs()
     {
-        var inPlace = Kernel.Compile("GramSchmidtRejection", ["v1=Vector3D:a", "v2=Vector3D:b", "v3=Vector3D:c", "w1=Vector3D:a", "w2=Vector3D:b", "w3=Vector3D:c"],
+        var inPlace = ShownKernel.Compile("GramSchmidtRejection", ["v1=Vector3D:a", "v2=Vector3D:b", "v3=Vector3D:c", "w1=Vector3D:a", "w2=Vector3D:b", "w3=Vector3D:c"],
             "public static V[] Run(V a, V b, V c) { CODE return new[] { a, b, c }; }");
-        var apart = Kernel.Compile("GramSchmidtRejection", ["v1=Vector3D:a", "v2=Vector3D:b", "v3=Vector3D:c", "w1=Vector3D:r", "w2=Vector3D:s", "w3=Vector3D:t"],
+        var apart = ShownKernel.Compile("GramSchmidtRejection", ["v1=Vector3D:a", "v2=Vector3D:b", "v3=Vector3D:c", "w1=Vector3D:r", "w2=Vector3D:s", "w3=Vector3D:t"],
             "public static V[] Run(V a, V b, V c) { V r = default, s = default, t = default; CODE return new[] { r, s, t }; }");
         var random = new Random(8);
         for (var i = 0; i < 20; i++)
@@ -43,40 +40,54 @@ public sealed class Generate_InPlace
         }
     }
 
-    private static double[] Coordinates(Random random) => [random.NextDouble() * 2 - 1, random.NextDouble() * 2 - 1, random.NextDouble() * 2 - 1];
-
-    /// <summary>The code <c>gmac show</c> prints for some bindings, compiled into a method over a struct V of x, y, z.</summary>
-    private sealed class Kernel(MethodInfo run, Type vector)
+    /// <summary>u × v written over u, with u and w spelt differently but naming the same storage.</summary>
+    [Theory]
+    [InlineData("u=Vector3D:ψ", "w=Vector3D:ψ", "public static V[] Run(V ψ, V b) { CODE return new[] { ψ }; }")]
+    [InlineData("u=Vector3D:p", "w=Vector3D:this.p", "public sealed class H { public V p; public void Go(V b) { CODE } } public static V[] Run(V a, V b) { var h = new H { p = a }; h.Go(b); return new[] { h.p }; }")]
+    [InlineData("u=Vector3D:@a", "w=Vector3D:(a)", "public static V[] Run(V a, V b) { CODE return new[] { a }; }")]
+    [InlineData("u=Vector3D:arr[i]", "w=Vector3D:arr[j]", "public static V[] Run(V a, V b) { var arr = new[] { a }; int i = 0, j = 0; CODE return new[] { arr[0] }; }")]
+    public void Cross_product_into_its_own_operand_spelt_another_way(string u, string w, string method)
     {
-        public static Kernel Compile(string macro, string[] binds, string method)
+        var kernel = ShownKernel.Compile("NormalToVectors", [u, "v=Vector3D:b", w], method);
+        var random = new Random(9);
+        for (var i = 0; i < 5; i++)
         {
-            var (exit, code, err) = Tool.Run(["show", macro, "--dsl", SharedDsl.DslDirectory, .. binds.SelectMany(b => new[] { "--bind", b })]);
-            Assert.True(exit == 0, err);
-            var source = $"public struct V {{ public double x, y, z; }}\npublic static class Kernel {{ {method.Replace("CODE", code)} }}";
-            var compilation = CSharpCompilation.Create("InPlace" + Guid.NewGuid().ToString("N"),
-                [CSharpSyntaxTree.ParseText(source)],
-                ((string)AppContext.GetData("TRUSTED_PLATFORM_ASSEMBLIES")!).Split(Path.PathSeparator).Select(p => MetadataReference.CreateFromFile(p)),
-                new CSharpCompilationOptions(OutputKind.DynamicallyLinkedLibrary));
-            using var stream = new MemoryStream();
-            var emitted = compilation.Emit(stream);
-            Assert.True(emitted.Success, string.Join("\n", emitted.Diagnostics) + "\n" + source);
-            var assembly = Assembly.Load(stream.ToArray());
-            return new Kernel(assembly.GetType("Kernel")!.GetMethod("Run")!, assembly.GetType("V")!);
-        }
-
-        public double[][] Run(params double[][] vectors)
-        {
-            var result = (Array)run.Invoke(null, vectors.Select(ToV).ToArray())!;
-            return result.Cast<object>().Select(v => new[] { "x", "y", "z" }.Select(n => (double)vector.GetField(n)!.GetValue(v)!).ToArray()).ToArray();
-        }
-
-        private object ToV(double[] c)
-        {
-            var v = Activator.CreateInstance(vector)!;
-            vector.GetField("x")!.SetValue(v, c[0]);
-            vector.GetField("y")!.SetValue(v, c[1]);
-            vector.GetField("z")!.SetValue(v, c[2]);
-            return v;
+            var (a, b) = (Coordinates(random), Coordinates(random));
+            var result = kernel.Run(a, b)[0];
+            double[] cross = [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+            for (var k = 0; k < 3; k++) Assert.Equal(cross[k], result[k], 12);
         }
     }
+
+    /// <summary>Two ref parameters may be one variable: the generated file, called with the same variable twice, still computes u × v.</summary>
+    [Fact]
+    public void Ref_parameters_that_are_one_variable()
+    {
+        using var temp = new TempFolder();
+        var path = temp.Write("Refs.cs", """
+            public struct V { public double x, y, z; }
+            public static class Kernel
+            {
+                public static void Go(ref V a, V b, ref V n)
+                {
+                    #region GMac : NormalToVectors
+                    //GMac.Bind("u", "Vector3D", a);
+                    //GMac.Bind("v", "Vector3D", b);
+                    //GMac.Bind("w", "Vector3D", n);
+                    #endregion
+                }
+
+                public static V[] Run(V a, V b) { Go(ref a, b, ref a); return new[] { a }; }
+            }
+            """);
+        var (exit, _, err) = Tool.Generate([path]);
+        Assert.True(exit == 0, err);
+        var kernel = ShownKernel.Load(File.ReadAllText(path));
+        double[] a = [0.3, -1.2, 0.7], b = [1.1, 0.4, -0.9];
+        var result = kernel.Run(a, b)[0];
+        double[] cross = [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+        for (var k = 0; k < 3; k++) Assert.Equal(cross[k], result[k], 12);
+    }
+
+    private static double[] Coordinates(Random random) => [random.NextDouble() * 2 - 1, random.NextDouble() * 2 - 1, random.NextDouble() * 2 - 1];
 }

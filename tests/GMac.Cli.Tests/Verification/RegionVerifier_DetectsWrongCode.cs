@@ -39,6 +39,28 @@ public sealed class RegionVerifier_DetectsWrongCode
         Assert.Contains($"output '{kernel.Outputs[1]}'", bad.Failure);
     }
 
+    /// <summary>
+    /// The kernel writes an in-place output over its input's slot, as the file's code does: code that
+    /// writes it before the input's last read (as if the two names did not alias) fails.
+    /// </summary>
+    [Fact]
+    public void In_place_code_that_overwrites_an_input_too_early_fails()
+    {
+        var context = SharedDsl.Context;
+        BindingSpec[] specs = [new ClassBindingSpec("u", "Vector3D", "ψ", 1, 1), new ClassBindingSpec("v", "Vector3D", "b", 2, 1), new ClassBindingSpec("w", "Vector3D", "this.ψ", 3, 1)];
+        var outcome = context.Generator.Generate("NormalToVectors", specs, 1);
+        Assert.True(outcome.Succeeded);
+        var remapped = KernelCompiler.Remap(outcome.Result!.Block, outcome.Plan!.InputTexts.Keys);
+        Assert.Equal(3, remapped.InPlace.Count);
+
+        var kernel = KernelCompiler.Compile([remapped])[0].Kernel!;
+        var good = RegionVerifier.Verify(kernel, outcome.Plan, [], [], RegionVerifier.Tolerance, seed: 3);
+        Assert.True(good.Passed, good.Failure);
+
+        var unheld = KernelCompiler.Compile([remapped with { MayOverwrite = (_, _) => false }])[0].Kernel!;
+        Assert.False(RegionVerifier.Verify(unheld, outcome.Plan, [], [], RegionVerifier.Tolerance, seed: 3).Passed);
+    }
+
     [Fact]
     public void Swapped_outputs_fail()
     {

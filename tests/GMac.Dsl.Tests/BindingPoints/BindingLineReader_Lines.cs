@@ -7,10 +7,24 @@ namespace GMac.Dsl.Tests.BindingPoints;
 /// <summary>The one reader of <c>//GMac.</c> lines: what each form becomes, and what it rejects.</summary>
 public sealed class BindingLineReader_Lines
 {
+    /// <summary>Read as a comment, such a line would be replaced with the generated code and its binding lost without a word.</summary>
+    [Theory]
+    [InlineData("    // GMac.Bind(\"u.e1\", \"<a>\");")]
+    [InlineData("    ///GMac.Bind(\"u.e1\", \"<a>\");")]
+    [InlineData("    //Gmac.Bind(\"u.e1\", \"<a>\");")]
+    public void Lines_that_only_look_like_binding_lines_are_errors(string line)
+    {
+        var read = BindingLineReader.Read(line, 3);
+        Assert.NotNull(read);
+        Assert.Null(read.Spec);
+        Assert.Equal((3, 5), (read.Line, read.Column));
+        Assert.Contains("looks like a GMac line", read.Error);
+    }
+
     [Fact]
     public void Lines_without_the_prefix_are_not_binding_lines()
     {
-        Assert.Null(BindingLineReader.Read("    // GMac.Bind(\"u.e1\", \"<a>\");", 3));
+        Assert.Null(BindingLineReader.Read("    // GMac: 12 operations", 3));
         Assert.Null(BindingLineReader.Read("x = 1; //GMac.Bind(\"u.e1\", \"<a>\");", 3));
         Assert.False(BindingLineReader.IsBindingLine("#region GMac : M"));
         Assert.True(BindingLineReader.IsBindingLine("\t //GMac.Anything"));

@@ -70,7 +70,7 @@ public sealed class MacroCodeGenerator_UserErrors
     {
         var outcome = Generator().Generate("Norm2",
         [
-            Bind("u", "e1", "<a>", 2), Bind("s", "1", "<r>", 3),
+            Bind("u", "e1", "<a>", 2), Bind("u", "e2", "0", 2), Bind("u", "e3", "0", 2), Bind("s", "1", "<r>", 3),
             new AssumptionSpec("a", 1, true, 4, 5), new AssumptionSpec("a", 3, false, 5, 7),
         ]);
         Assert.True(outcome.Succeeded, string.Join("; ", outcome.Errors));

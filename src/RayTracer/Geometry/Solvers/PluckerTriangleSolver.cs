@@ -82,6 +82,9 @@ public static class PluckerTriangleSolver
         //GMac.Bind("v3", "PgaVector3D", c);
         //GMac.Bind("d1.1", "<d1>");
         //GMac.Bind("d2.1", "<d2>");
+        //GMac.Bind("pr.e1", "0");
+        //GMac.Bind("pr.e2", "0");
+        //GMac.Bind("pr.e3", "0");
         double tmp0 = b.x * ray.d.y - b.y * ray.d.x;
         double tmp1 = b.z * ray.d.x - b.x * ray.d.z;
         double tmp2 = b.z * ray.d.y - b.y * ray.d.z;
@@ -99,6 +102,9 @@ public static class PluckerTriangleSolver
         //GMac.Bind("v2", "PgaVector3D", b);
         //GMac.Bind("v3", "PgaVector3D", c);
         //GMac.Bind("d3.1", "<d3>");
+        //GMac.Bind("pr.e1", "0");
+        //GMac.Bind("pr.e2", "0");
+        //GMac.Bind("pr.e3", "0");
         d3 = ray.d.x * (c.z * a.y - c.y * a.z) + ray.d.y * (a.z * c.x - c.z * a.x) + ray.d.z * (c.y * a.x - a.y * c.x);
         #endregion
 
@@ -112,6 +118,9 @@ public static class PluckerTriangleSolver
         //GMac.Bind("v2", "PgaVector3D", b);
         //GMac.Bind("v3", "PgaVector3D", c);
         //GMac.Bind("tn.1", "<tn>");
+        //GMac.Bind("pr.e1", "0");
+        //GMac.Bind("pr.e2", "0");
+        //GMac.Bind("pr.e3", "0");
         double t0 = a.x - b.x;
         double t1 = a.y - b.y;
         double t2 = a.z - b.z;
@@ -134,6 +143,19 @@ public static class PluckerTriangleSolver
         //GMac.Bind("l2", "PluckerLine", triangle.L2);
         //GMac.Bind("d1.1", "<d1>");
         //GMac.Bind("d2.1", "<d2>");
+        //GMac.Bind("pr.e1", "0");
+        //GMac.Bind("pr.e2", "0");
+        //GMac.Bind("pr.e3", "0");
+        //GMac.Bind("l3.e1^e2", "0");
+        //GMac.Bind("l3.e1^e3", "0");
+        //GMac.Bind("l3.e2^e3", "0");
+        //GMac.Bind("l3.e1^eo", "0");
+        //GMac.Bind("l3.e2^eo", "0");
+        //GMac.Bind("l3.e3^eo", "0");
+        //GMac.Bind("plane.e1^e2^e3", "0");
+        //GMac.Bind("plane.e1^e2^eo", "0");
+        //GMac.Bind("plane.e1^e3^eo", "0");
+        //GMac.Bind("plane.e2^e3^eo", "0");
         d1 = lr.xy * triangle.L1.zo + lr.yz * triangle.L1.xo + lr.xo * triangle.L1.yz + lr.zo * triangle.L1.xy - triangle.L1.yo * lr.xz - lr.yo * triangle.L1.xz;
         d2 = lr.xy * triangle.L2.zo + lr.yz * triangle.L2.xo + triangle.L2.xy * lr.zo + triangle.L2.yz * lr.xo - triangle.L2.xz * lr.yo - triangle.L2.yo * lr.xz;
         #endregion
@@ -147,6 +169,22 @@ public static class PluckerTriangleSolver
         //GMac.Bind("lr", "PluckerLine", lr);
         //GMac.Bind("l3", "PluckerLine", triangle.L3);
         //GMac.Bind("d3.1", "<d3>");
+        //GMac.Bind("l1.e1^e2", "0");
+        //GMac.Bind("l1.e1^e3", "0");
+        //GMac.Bind("l1.e2^e3", "0");
+        //GMac.Bind("l1.e1^eo", "0");
+        //GMac.Bind("l1.e2^eo", "0");
+        //GMac.Bind("l1.e3^eo", "0");
+        //GMac.Bind("l2.e1^e2", "0");
+        //GMac.Bind("l2.e1^e3", "0");
+        //GMac.Bind("l2.e2^e3", "0");
+        //GMac.Bind("l2.e1^eo", "0");
+        //GMac.Bind("l2.e2^eo", "0");
+        //GMac.Bind("l2.e3^eo", "0");
+        //GMac.Bind("plane.e1^e2^e3", "0");
+        //GMac.Bind("plane.e1^e2^eo", "0");
+        //GMac.Bind("plane.e1^e3^eo", "0");
+        //GMac.Bind("plane.e2^e3^eo", "0");
         d3 = triangle.L3.yz * lr.xo + triangle.L3.xo * lr.yz + triangle.L3.zo * lr.xy + lr.zo * triangle.L3.xy - triangle.L3.xz * lr.yo - triangle.L3.yo * lr.xz;
         #endregion
 
@@ -158,6 +196,30 @@ public static class PluckerTriangleSolver
         //GMac.Bind("pr", "PgaVector3D", ray.o);
         //GMac.Bind("plane", "PluckerPlane", triangle.Plane);
         //GMac.Bind("tn.1", "<tn>");
+        //GMac.Bind("lr.e1^e2", "0");
+        //GMac.Bind("lr.e1^e3", "0");
+        //GMac.Bind("lr.e2^e3", "0");
+        //GMac.Bind("lr.e1^eo", "0");
+        //GMac.Bind("lr.e2^eo", "0");
+        //GMac.Bind("lr.e3^eo", "0");
+        //GMac.Bind("l1.e1^e2", "0");
+        //GMac.Bind("l1.e1^e3", "0");
+        //GMac.Bind("l1.e2^e3", "0");
+        //GMac.Bind("l1.e1^eo", "0");
+        //GMac.Bind("l1.e2^eo", "0");
+        //GMac.Bind("l1.e3^eo", "0");
+        //GMac.Bind("l2.e1^e2", "0");
+        //GMac.Bind("l2.e1^e3", "0");
+        //GMac.Bind("l2.e2^e3", "0");
+        //GMac.Bind("l2.e1^eo", "0");
+        //GMac.Bind("l2.e2^eo", "0");
+        //GMac.Bind("l2.e3^eo", "0");
+        //GMac.Bind("l3.e1^e2", "0");
+        //GMac.Bind("l3.e1^e3", "0");
+        //GMac.Bind("l3.e2^e3", "0");
+        //GMac.Bind("l3.e1^eo", "0");
+        //GMac.Bind("l3.e2^eo", "0");
+        //GMac.Bind("l3.e3^eo", "0");
         tn = ray.o.x * triangle.Plane.yzo + ray.o.z * triangle.Plane.xyo - ray.o.y * triangle.Plane.xzo - triangle.Plane.xyz;
         #endregion
 
