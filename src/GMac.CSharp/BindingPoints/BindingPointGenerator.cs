@@ -158,7 +158,7 @@ internal static class BindingPointGenerator
                 $"a second GMac.Type line; the binding point's type is already given at line {lines[0].Line}"));
         if (lines.Count == 0) return context.DefaultScalarType;
         var name = lines[0].TypeName;
-        if (!CSharpEmitOptions.ScalarTypes.Contains(name))
+        if (!CSharpEmitter.ScalarTypes.Contains(name))
         {
             var hint = name.ToLowerInvariant() switch
             {
@@ -167,7 +167,7 @@ internal static class BindingPointGenerator
                 _ => "",
             };
             diagnostics.Add(new(DiagnosticCodes.InvalidScalarType, SourceSpan.At(file.Path, lines[0].Line, lines[0].Column),
-                $"GMac.Type(\"{name}\"): gmac writes code in {string.Join(" or ", CSharpEmitOptions.ScalarTypes)}, not '{name}'{hint}"));
+                $"GMac.Type(\"{name}\"): gmac writes code in {string.Join(" or ", CSharpEmitter.ScalarTypes)}, not '{name}'{hint}"));
             return null;
         }
         return lines.Count > 1 ? null : name;

@@ -1,16 +1,13 @@
 namespace GMac.CSharp.Emit;
 
-/// <summary>Formatting choices for <see cref="CSharpEmitter"/>.</summary>
+/// <summary>Formatting choices for the C# emitters (<see cref="ICodeEmitter"/>).</summary>
 public sealed record CSharpEmitOptions
 {
-    /// <summary>The scalar types the emitter writes: <c>double</c> (the default) and <c>float</c>.</summary>
-    public static readonly IReadOnlyList<string> ScalarTypes = ["double", "float"];
-
     public string Indent { get; init; } = "";
     public string NewLine { get; init; } = "\n";
 
     /// <summary>
-    /// The declared type of temporaries, one of <see cref="ScalarTypes"/>. With <c>float</c>,
+    /// The declared type of temporaries, one of <see cref="CSharpEmitter.ScalarTypes"/>. With <c>float</c>,
     /// functions are <c>MathF</c>'s and constants <c>f</c>-suffixed literals rounded once to float.
     /// </summary>
     public string ScalarType { get; init; } = "double";
