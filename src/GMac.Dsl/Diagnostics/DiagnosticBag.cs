@@ -20,6 +20,8 @@ public sealed class DiagnosticBag
     public void ReportSyntaxError(SourceSpan span, string message) => Report(DiagnosticCodes.SyntaxError, span, message);
     public void ReportNestingTooDeep(SourceSpan span, int limit) =>
         Report(DiagnosticCodes.NestingTooDeep, span, $"expression nested deeper than {limit} levels");
+    public void ReportOperatorChainTooLong(SourceSpan span, int limit) =>
+        Report(DiagnosticCodes.NestingTooDeep, span, $"expression has more than {limit} operators in a row that each nest it one level deeper (products, quotients, powers, signs)");
     public void ReportCannotRead(SourceSpan span, string reason) => Report(DiagnosticCodes.CannotReadDsl, span, reason);
 
     // ---- names

@@ -94,20 +94,26 @@ internal sealed partial class Binder
         ReportUnused();
     }
 
-    /// <summary>A definition is bound only if parsing it needed no recovery.</summary>
-    private static bool IsComplete(IParseTree node)
+    /// <summary>A definition is bound only if parsing it needed no recovery. Walked without
+    /// recursion: a long flat sum parses as a tree as deep as it is long.</summary>
+    private static bool IsComplete(IParseTree root)
     {
-        if (node is IErrorNode) return false;
-        if (node is ParserRuleContext rule)
+        var pending = new Stack<IParseTree>();
+        pending.Push(root);
+        while (pending.Count > 0)
         {
-            if (rule.exception is not null) return false;
-            if (rule.Stop is null) return false;
-            for (var i = 0; i < rule.ChildCount; i++)
-                if (!IsComplete(rule.GetChild(i))) return false;
-        }
-        else if (node is ITerminalNode terminal && terminal.Symbol.TokenIndex < 0)
-        {
-            return false; // a token conjured by single-token insertion
+            var node = pending.Pop();
+            if (node is IErrorNode) return false;
+            if (node is ParserRuleContext rule)
+            {
+                if (rule.exception is not null) return false;
+                if (rule.Stop is null) return false;
+                for (var i = 0; i < rule.ChildCount; i++) pending.Push(rule.GetChild(i));
+            }
+            else if (node is ITerminalNode terminal && terminal.Symbol.TokenIndex < 0)
+            {
+                return false; // a token conjured by single-token insertion
+            }
         }
         return true;
     }

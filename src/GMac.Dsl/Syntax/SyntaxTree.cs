@@ -16,7 +16,9 @@ public sealed class SyntaxTree
     /// that a recursive-descent parser cannot exhaust the stack.</summary>
     public const int MaxNesting = 200;
 
-    /// <summary>Longest run of operators in one expression.</summary>
+    /// <summary>Longest run of operators that each nest the expression one level deeper (prefix
+    /// operators and binary operators other than <c>+</c> and <c>-</c>). A flat sum is not limited:
+    /// the binder evaluates a long one as a balanced tree.</summary>
     public const int MaxOperatorChain = 2000;
 
     private SyntaxTree(string filePath, string text, GMacDslParser.CompilationUnitContext? root,
@@ -44,11 +46,32 @@ public sealed class SyntaxTree
         var tokens = new CommonTokenStream(lexer);
         tokens.Fill();
 
+        // An unclosed "/*" lexes as '/' and '*': say so at the "/*", and read the text before it,
+        // without the errors its abrupt end causes there.
+        var parserErrors = bag;
+        var unterminated = FindUnterminatedComment(tokens.GetTokens());
+        if (unterminated is not null)
+        {
+            bag.ReportSyntaxError(SpanOf(filePath, unterminated), "unterminated comment: '/*' has no closing '*/'");
+            tokens = TokensBefore(tokens.GetTokens(), unterminated);
+            parserErrors = new DiagnosticBag();
+            collector = new SyntaxErrorCollector(filePath, parserErrors);
+        }
+
         if (FindExcessiveNesting(tokens.GetTokens()) is { } deep)
         {
-            bag.ReportNestingTooDeep(SpanOf(filePath, deep), MaxNesting);
+            if (deep.IsChain) bag.ReportOperatorChainTooLong(SpanOf(filePath, deep.Token), MaxOperatorChain);
+            else bag.ReportNestingTooDeep(SpanOf(filePath, deep.Token), MaxNesting);
             return new SyntaxTree(filePath, text, null, bag.Items);
         }
+        var root = ParseTokens(tokens, collector);
+        if (unterminated is not null)
+            bag.AddRange(parserErrors.Items.Where(d => d.Span.Start != unterminated.StartIndex || d.Span.Length != 0));
+        return new SyntaxTree(filePath, text, root, bag.Items);
+    }
+
+    private static GMacDslParser.CompilationUnitContext ParseTokens(CommonTokenStream tokens, SyntaxErrorCollector collector)
+    {
 
         // Two-stage parse: the fast SLL prediction almost always suffices; only when it
         // fails is the file parsed again with full LL prediction and error recovery.
@@ -70,7 +93,30 @@ public sealed class SyntaxTree
             parser.Interpreter.PredictionMode = PredictionMode.LL;
             root = parser.compilationUnit();
         }
-        return new SyntaxTree(filePath, text, root, bag.Items);
+        return root;
+    }
+
+    /// <summary>A '/' directly followed by '*': a "/*" the lexer could not close with "*/".</summary>
+    private static IToken? FindUnterminatedComment(IList<IToken> tokens)
+    {
+        for (var i = 0; i + 1 < tokens.Count; i++)
+            if (tokens[i].Type == GMacDslLexer.SLASH && tokens[i + 1].Type == GMacDslLexer.STAR
+                && tokens[i + 1].StartIndex == tokens[i].StopIndex + 1)
+                return tokens[i];
+        return null;
+    }
+
+    /// <summary>The tokens before <paramref name="end"/>, then an end of file where it starts.</summary>
+    private static CommonTokenStream TokensBefore(IList<IToken> tokens, IToken end)
+    {
+        var kept = new List<IToken>(tokens.Take(end.TokenIndex));
+        kept.Add(new CommonToken(TokenConstants.EOF)
+        {
+            Line = end.Line, Column = end.Column, StartIndex = end.StartIndex, StopIndex = end.StartIndex - 1,
+        });
+        var stream = new CommonTokenStream(new ListTokenSource(kept));
+        stream.Fill();
+        return stream;
     }
 
     internal static SourceSpan SpanOf(string filePath, IToken token) =>
@@ -85,13 +131,18 @@ public sealed class SyntaxTree
         return new SourceSpan(filePath, Math.Max(1, start.Line), start.Column + 1, Math.Max(0, start.StartIndex), length);
     }
 
-    private static IToken? FindExcessiveNesting(IList<IToken> tokens)
+    private static (IToken Token, bool IsChain)? FindExcessiveNesting(IList<IToken> tokens)
     {
         var depth = 0;
         var operatorRun = 0;
+        var afterOperand = false;
         foreach (var token in tokens)
         {
             if (token.Channel != TokenConstants.DefaultChannel) continue;
+            // A binary + or - (one after an operand) adds no depth: the binder balances sums.
+            var isSumOperator = afterOperand && token.Type is GMacDslLexer.PLUS or GMacDslLexer.MINUS;
+            afterOperand = token.Type is GMacDslLexer.ID or GMacDslLexer.INT or GMacDslLexer.FLOAT
+                or GMacDslLexer.RPAREN or GMacDslLexer.RBRACKET or GMacDslLexer.RBRACE or GMacDslLexer.GT;
             switch (token.Type)
             {
                 case GMacDslLexer.LPAREN or GMacDslLexer.LBRACKET or GMacDslLexer.LBRACE:
@@ -102,7 +153,7 @@ public sealed class SyntaxTree
                     break;
             }
             // Operator chains build deep trees that later stages walk recursively.
-            operatorRun = token.Type switch
+            operatorRun = isSumOperator ? operatorRun : token.Type switch
             {
                 GMacDslLexer.MINUS or GMacDslLexer.PLUS or GMacDslLexer.STAR or GMacDslLexer.SLASH
                     or GMacDslLexer.CARET or GMacDslLexer.LPAREN or GMacDslLexer.GP or GMacDslLexer.OP
@@ -112,7 +163,8 @@ public sealed class SyntaxTree
                     or GMacDslLexer.GT or GMacDslLexer.RPAREN or GMacDslLexer.RBRACKET or GMacDslLexer.LBRACKET => operatorRun,
                 _ => 0,
             };
-            if (depth > MaxNesting || operatorRun > MaxOperatorChain) return token;
+            if (depth > MaxNesting) return (token, false);
+            if (operatorRun > MaxOperatorChain) return (token, true);
         }
         return null;
     }

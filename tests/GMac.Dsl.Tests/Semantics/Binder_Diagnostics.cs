@@ -265,6 +265,38 @@ public sealed class Binder_Diagnostics
         Assert.False(d.IsError);
     }
 
+    [Theory]
+    [InlineData("w = «uu» + v;", "GMAC0101")]
+    [InlineData("w = «u / v»;", "GMAC0116")]
+    [InlineData("call «Nope» { a : u; b : w };", "GMAC0101")]
+    public void An_error_in_assigning_an_output_is_not_followed_by_never_assigned(string performs, string code)
+    {
+        MarkedSource.AssertSingle(Macro(performs), code, DslSnippets.E3d);
+        var project = DslProject.FromSources([("test.gmac", MarkedSource.Parse(Macro(performs)).Text), ("prelude.gmac", DslSnippets.E3d)]);
+        Assert.DoesNotContain(project.Diagnostics, d => d.Code == "GMAC0202");
+    }
+
+    [Theory]
+    [InlineData("define frame a as basis: {x} Euclidean end frame\n«/*» the rest\ndefine frame b as basis: {y} Euclidean end frame")]
+    [InlineData("define frame a as basis: {x} «/*» Euclidean end frame")]
+    public void An_unclosed_block_comment_is_reported_at_its_start(string marked)
+    {
+        var d = MarkedSource.AssertSingle(marked, "GMAC0001");
+        Assert.Equal("unterminated comment: '/*' has no closing '*/'", d.Message);
+        var project = SingleFileProject.Bind(MarkedSource.Parse(marked).Text);
+        Assert.Single(project.Diagnostics);
+    }
+
+    [Fact]
+    public void A_long_chain_of_products_is_reported_as_one_not_as_bracket_nesting()
+    {
+        var factors = string.Join(" * ", Enumerable.Repeat("2", 2002));
+        var project = SingleFileProject.Bind($"define frame a as basis: {{x}} IPM = {{{{{factors}}}}} end frame");
+        var d = Assert.Single(project.Diagnostics);
+        Assert.Equal("GMAC0002", d.Code);
+        Assert.Contains("more than 2000 operators in a row", d.Message);
+    }
+
     [Fact]
     public void Excessive_nesting_is_refused_before_parsing()
     {
