@@ -63,6 +63,7 @@ public static class DiagnosticCodes
     public static readonly DiagnosticDescriptor EmptyAssumption = new("GMAC0312", Error, "assumed minimum and maximum of one expression leave no value", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor GeneratedDivisionByZero = new("GMAC0313", Error, "the macro divides by an expression that is zero for these bindings", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor TooLarge = new("GMAC0314", Error, "an operation of the macro is too large to evaluate symbolically", ReportedBy.Generation);
+    public static readonly DiagnosticDescriptor ConstantOutOfRange = new("GMAC0315", Error, "a constant of the generated code is outside the range of its scalar type (float or double)", ReportedBy.Generation);
 
     // ---- binding points, C# files, verification
     public static readonly DiagnosticDescriptor UnmatchedEndRegion = new("GMAC0401", Error, "#endregion without a matching #region", ReportedBy.SourceFiles);
