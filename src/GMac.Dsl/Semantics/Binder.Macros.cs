@@ -100,6 +100,7 @@ internal sealed partial class Binder
         foreach (var statement in syntax.statement())
             if (BindStatement(statement, scope, context) is { } bound) statements.Add(bound);
         macro.Statements = statements;
+        macro.LiveStatements = Liveness.Of(statements, macro.Outputs);
         macro.Temporaries = context.Temporaries;
         macro.Callees = context.Callees.ToList();
 
