@@ -22,6 +22,8 @@ public sealed class DiagnosticBag
         Report(DiagnosticCodes.NestingTooDeep, span, $"expression nested deeper than {limit} levels");
     public void ReportOperatorChainTooLong(SourceSpan span, int limit) =>
         Report(DiagnosticCodes.NestingTooDeep, span, $"expression has more than {limit} operators in a row that each nest it one level deeper (products, quotients, powers, signs)");
+    public void ReportFileTooLarge(SourceSpan span, int limit) =>
+        Report(DiagnosticCodes.FileTooLarge, span, $"the file has more than {limit} tokens (words, numbers and symbols), the most gmac reads from one file; split it");
     public void ReportCannotRead(SourceSpan span, string reason) => Report(DiagnosticCodes.CannotReadDsl, span, reason);
 
     // ---- names

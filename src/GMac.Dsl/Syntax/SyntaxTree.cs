@@ -21,6 +21,11 @@ public sealed class SyntaxTree
     /// the binder evaluates a long one as a balanced tree.</summary>
     public const int MaxOperatorChain = 2000;
 
+    /// <summary>Most tokens (not counting whitespace and comments) read from one file: parsing and
+    /// binding take memory and time in proportion, about 300 bytes a token, so a file is refused as
+    /// it grows past this rather than after exhausting memory.</summary>
+    public const int MaxTokens = 1_000_000;
+
     private SyntaxTree(string filePath, string text, GMacDslParser.CompilationUnitContext? root,
         IReadOnlyList<Diagnostic> diagnostics)
     {
@@ -34,7 +39,11 @@ public sealed class SyntaxTree
     public string Text { get; }
     public IReadOnlyList<Diagnostic> Diagnostics { get; }
 
-    internal GMacDslParser.CompilationUnitContext? Root { get; }
+    /// <summary>The parse tree, until the binder has read it (<see cref="ReleaseRoot"/>).</summary>
+    internal GMacDslParser.CompilationUnitContext? Root { get; private set; }
+
+    /// <summary>Drops the parse tree, many times the size of the text, once it is bound.</summary>
+    internal void ReleaseRoot() => Root = null;
 
     public static SyntaxTree Parse(string filePath, string text)
     {
@@ -43,8 +52,14 @@ public sealed class SyntaxTree
         var lexer = new GMacDslLexer(new AntlrInputStream(text));
         lexer.RemoveErrorListeners();
         lexer.AddErrorListener(collector);
-        var tokens = new CommonTokenStream(lexer);
+        var source = new BudgetedTokenSource(lexer, MaxTokens);
+        var tokens = new CommonTokenStream(source);
         tokens.Fill();
+        if (source.Exceeded is { } last)
+        {
+            bag.ReportFileTooLarge(SpanOf(filePath, last), MaxTokens);
+            return new SyntaxTree(filePath, text, null, bag.Items);
+        }
 
         // An unclosed "/*" lexes as '/' and '*': say so at the "/*", and read the text before it,
         // without the errors its abrupt end causes there.
@@ -94,6 +109,42 @@ public sealed class SyntaxTree
             root = parser.compilationUnit();
         }
         return root;
+    }
+
+    /// <summary>
+    /// The lexer's tokens on the default channel (whitespace and comments are dropped, not stored),
+    /// at most <paramref name="budget"/> of them: then an end of file, and <see cref="Exceeded"/> is
+    /// the first token over the budget.
+    /// </summary>
+    private sealed class BudgetedTokenSource(GMacDslLexer lexer, int budget) : ITokenSource
+    {
+        private int _count;
+
+        public IToken? Exceeded { get; private set; }
+
+        public IToken NextToken()
+        {
+            while (true)
+            {
+                var token = lexer.NextToken();
+                if (token.Type == TokenConstants.EOF) return token;
+                if (token.Channel != TokenConstants.DefaultChannel) continue;
+                if (++_count <= budget) return token;
+                Exceeded = token;
+                return new CommonToken(TokenConstants.EOF) { Line = token.Line, Column = token.Column, StartIndex = token.StartIndex, StopIndex = token.StartIndex - 1 };
+            }
+        }
+
+        public int Line => lexer.Line;
+        public int Column => lexer.Column;
+        public ICharStream InputStream => (ICharStream)lexer.InputStream;
+        public string SourceName => lexer.SourceName;
+
+        public ITokenFactory TokenFactory
+        {
+            get => lexer.TokenFactory;
+            set => lexer.TokenFactory = value;
+        }
     }
 
     /// <summary>A '/' directly followed by '*': a "/*" the lexer could not close with "*/".</summary>
