@@ -16,10 +16,10 @@ public sealed class SyntaxTree
     /// that a recursive-descent parser cannot exhaust the stack.</summary>
     public const int MaxNesting = 200;
 
-    /// <summary>Longest run of operators that each nest the expression one level deeper (prefix
-    /// operators and binary operators other than <c>+</c> and <c>-</c>). A flat sum is not limited:
-    /// the binder evaluates a long one as a balanced tree.</summary>
-    public const int MaxOperatorChain = 2000;
+    /// <summary>Deepest an expression's tree may get through brackets and the operators that nest
+    /// (prefix signs, products, quotients, powers): its stages recurse that deep. A flat sum adds no
+    /// depth: the binder evaluates a long one as a balanced tree.</summary>
+    public const int MaxOperatorChain = 1000;
 
     /// <summary>Most tokens (not counting whitespace and comments) read from one file: parsing and
     /// binding take memory and time in proportion, about 300 bytes a token, so a file is refused as
@@ -182,15 +182,23 @@ public sealed class SyntaxTree
         return new SourceSpan(filePath, Math.Max(1, start.Line), start.Column + 1, Math.Max(0, start.StartIndex), length);
     }
 
+    /// <summary>
+    /// The first token at which brackets nest deeper than <see cref="MaxNesting"/>, or at which the
+    /// expression's tree gets deeper than <see cref="MaxOperatorChain"/>: each bracket and each operator
+    /// that nests (prefix signs, products, quotients, powers) adds a level until the end of its operand
+    /// list; a binary + or - starts the next operand at the level of its bracket, since the binder
+    /// balances sums.
+    /// </summary>
     private static (IToken Token, bool IsChain)? FindExcessiveNesting(IList<IToken> tokens)
     {
         var depth = 0;
-        var operatorRun = 0;
+        var run = 0;       // the tree depth at this token
+        var levelBase = 0; // the depth just inside the innermost open bracket
+        var bases = new Stack<int>();
         var afterOperand = false;
         foreach (var token in tokens)
         {
             if (token.Channel != TokenConstants.DefaultChannel) continue;
-            // A binary + or - (one after an operand) adds no depth: the binder balances sums.
             var isSumOperator = afterOperand && token.Type is GMacDslLexer.PLUS or GMacDslLexer.MINUS;
             afterOperand = token.Type is GMacDslLexer.ID or GMacDslLexer.INT or GMacDslLexer.FLOAT
                 or GMacDslLexer.RPAREN or GMacDslLexer.RBRACKET or GMacDslLexer.RBRACE or GMacDslLexer.GT;
@@ -198,24 +206,31 @@ public sealed class SyntaxTree
             {
                 case GMacDslLexer.LPAREN or GMacDslLexer.LBRACKET or GMacDslLexer.LBRACE:
                     depth++;
+                    bases.Push(levelBase);
+                    levelBase = run = run + 1;
                     break;
                 case GMacDslLexer.RPAREN or GMacDslLexer.RBRACKET or GMacDslLexer.RBRACE:
+                    // The bracketed group is one operand at the depth before it opened.
                     depth = Math.Max(0, depth - 1);
+                    run = Math.Max(0, levelBase - 1);
+                    levelBase = bases.Count > 0 ? bases.Pop() : 0;
+                    break;
+                case GMacDslLexer.PLUS or GMacDslLexer.MINUS when isSumOperator:
+                    run = levelBase;
+                    break;
+                case GMacDslLexer.MINUS or GMacDslLexer.PLUS or GMacDslLexer.STAR or GMacDslLexer.SLASH
+                    or GMacDslLexer.CARET or GMacDslLexer.GP or GMacDslLexer.OP or GMacDslLexer.SP or GMacDslLexer.LCP
+                    or GMacDslLexer.RCP or GMacDslLexer.FDP or GMacDslLexer.HIP or GMacDslLexer.CP or GMacDslLexer.ACP:
+                    run++;
+                    break;
+                case GMacDslLexer.ID or GMacDslLexer.INT or GMacDslLexer.FLOAT or GMacDslLexer.DOT or GMacDslLexer.LT or GMacDslLexer.GT:
+                    break;
+                default:
+                    run = levelBase; // a separator or keyword ends the operand
                     break;
             }
-            // Operator chains build deep trees that later stages walk recursively.
-            operatorRun = isSumOperator ? operatorRun : token.Type switch
-            {
-                GMacDslLexer.MINUS or GMacDslLexer.PLUS or GMacDslLexer.STAR or GMacDslLexer.SLASH
-                    or GMacDslLexer.CARET or GMacDslLexer.LPAREN or GMacDslLexer.GP or GMacDslLexer.OP
-                    or GMacDslLexer.SP or GMacDslLexer.LCP or GMacDslLexer.RCP or GMacDslLexer.FDP
-                    or GMacDslLexer.HIP or GMacDslLexer.CP or GMacDslLexer.ACP => operatorRun + 1,
-                GMacDslLexer.ID or GMacDslLexer.INT or GMacDslLexer.FLOAT or GMacDslLexer.DOT or GMacDslLexer.LT
-                    or GMacDslLexer.GT or GMacDslLexer.RPAREN or GMacDslLexer.RBRACKET or GMacDslLexer.LBRACKET => operatorRun,
-                _ => 0,
-            };
             if (depth > MaxNesting) return (token, false);
-            if (operatorRun > MaxOperatorChain) return (token, true);
+            if (run > MaxOperatorChain) return (token, true);
         }
         return null;
     }

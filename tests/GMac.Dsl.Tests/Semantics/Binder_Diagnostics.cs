@@ -1,3 +1,4 @@
+using GMac.Dsl.Syntax;
 using GMac.Dsl.Tests.Support;
 
 namespace GMac.Dsl.Tests.Semantics;
@@ -288,13 +289,13 @@ public sealed class Binder_Diagnostics
     }
 
     [Fact]
-    public void A_long_chain_of_products_is_reported_as_one_not_as_bracket_nesting()
+    public void A_long_chain_of_products_is_reported_as_deep_operator_nesting()
     {
-        var factors = string.Join(" * ", Enumerable.Repeat("2", 2002));
+        var factors = string.Join(" * ", Enumerable.Repeat("2", SyntaxTree.MaxOperatorChain + 2));
         var project = SingleFileProject.Bind($"define frame a as basis: {{x}} IPM = {{{{{factors}}}}} end frame");
         var d = Assert.Single(project.Diagnostics);
         Assert.Equal("GMAC0002", d.Code);
-        Assert.Contains("more than 2000 operators in a row", d.Message);
+        Assert.Contains($"nests more than {SyntaxTree.MaxOperatorChain} levels deep", d.Message);
     }
 
     [Fact]

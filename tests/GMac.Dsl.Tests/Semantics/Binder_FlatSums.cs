@@ -16,10 +16,11 @@ public sealed class Binder_FlatSums
     [InlineData(20_000)]
     public void A_flat_sum_of_thousands_of_terms_evaluates_to_the_sum_written(int count)
     {
-        // Signs in a pattern that is not periodic in powers of two, so every split of the sum mixes them.
+        // Signs in a pattern that is not periodic in powers of two, so every split of the sum mixes them;
+        // products and brackets in the terms nest only within their term.
         var terms = Enumerable.Range(0, count).Select(i => (i % 3, i % 7 == 0)).ToList();
         var text = string.Concat(terms.Select((t, i) =>
-            (i == 0 ? (t.Item2 ? "-" : "") : t.Item2 ? " - " : " + ") + (t.Item1 switch { 0 => "u", 1 => "v", _ => "x" })));
+            (i == 0 ? (t.Item2 ? "-" : "") : t.Item2 ? " - " : " + ") + (t.Item1 switch { 0 => "u", 1 => "2 * v", _ => "(x)" })));
         var project = SingleFileProject.Bind(DslSnippets.E3d + $$"""
 
             define macro S as
@@ -42,7 +43,7 @@ public sealed class Binder_FlatSums
         for (var id = 0; id < w.Frame.BladeCount; id++)
         {
             var blade = new BasisBlade(id);
-            var expected = (Scalar)Weight(0) * u[blade] + Weight(1) * v[blade] + Weight(2) * x[blade];
+            var expected = (Scalar)Weight(0) * u[blade] + 2 * Weight(1) * v[blade] + Weight(2) * x[blade];
             Assert.Equal(expected, w[blade]);
         }
     }
