@@ -135,10 +135,26 @@ internal sealed partial class Binder
 
     private bool IsBroken(string name) => _brokenNames.Contains(name);
 
+    /// <summary>
+    /// Candidates compared for "did you mean" hints, over the whole project. Each unknown name is
+    /// compared with every name in scope: thousands of both would take minutes. Past the budget,
+    /// unknown names are reported without a hint, and binding stays linear in the file's size.
+    /// </summary>
+    internal const int HintComparisons = 500_000;
+
+    private long _hintComparisonsLeft = HintComparisons;
+
     private void ReportUnknown(SourceSpan span, string kind, string name, IEnumerable<string> candidates)
     {
         if (IsBroken(name)) return;
-        _diagnostics.ReportUnknownName(span, kind, name, NameSuggester.Suggest(name, candidates));
+        string? hint = null;
+        if (_hintComparisonsLeft > 0)
+        {
+            var list = candidates as IReadOnlyCollection<string> ?? candidates.ToList();
+            _hintComparisonsLeft -= list.Count;
+            hint = NameSuggester.Suggest(name, list);
+        }
+        _diagnostics.ReportUnknownName(span, kind, name, hint);
     }
 
     // ------------------------------------------------------------------ lookups
