@@ -103,7 +103,7 @@ internal sealed partial class Binder
         }
     }
 
-    /// <summary>Sums longer than this are evaluated as a balanced tree; shorter ones left to right.</summary>
+    /// <summary>Sums of this many operators or more are bound as a balanced tree; shorter ones left to right.</summary>
     private const int LongSum = 64;
 
     /// <summary>

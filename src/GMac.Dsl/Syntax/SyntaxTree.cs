@@ -87,7 +87,6 @@ public sealed class SyntaxTree
 
     private static GMacDslParser.CompilationUnitContext ParseTokens(CommonTokenStream tokens, SyntaxErrorCollector collector)
     {
-
         // Two-stage parse: the fast SLL prediction almost always suffices; only when it
         // fails is the file parsed again with full LL prediction and error recovery.
         var parser = new GMacDslParser(tokens);
