@@ -86,6 +86,7 @@ public sealed class DslProject
         var watch = Stopwatch.StartNew();
         var trees = sources.Select(s => SyntaxTree.Parse(s.Path, s.Text)).ToList();
         var model = Binder.Bind(trees);
+        foreach (var tree in trees) tree.ReleaseRoot();
         watch.Stop();
         var diagnostics = (earlier ?? []).Concat(model.Diagnostics)
             .OrderBy(d => d.Span.FilePath, StringComparer.Ordinal)

@@ -29,6 +29,13 @@ public static class FileStat
         return File.Exists(path) ? FileKind.Regular : FileKind.Unknown;
     }
 
+    /// <summary>
+    /// The file-type bits of <paramref name="path"/>'s mode (<c>st_mode &amp; S_IFMT</c>: 0x1000 FIFO,
+    /// 0x2000 character device, 0x4000 directory, 0x6000 block device, 0x8000 regular, 0xC000 socket),
+    /// following symbolic links; null where the platform does not say or nothing is there.
+    /// </summary>
+    public static int? TypeBitsOf(string path) => Query(path) is { } status ? status.Mode & TypeMask : null;
+
     /// <summary>The owning user and group of <paramref name="path"/>; null where the platform does not say.</summary>
     public static (uint User, uint Group)? OwnerOf(string path) =>
         Query(path) is { } status ? (status.User, status.Group) : null;

@@ -1,5 +1,3 @@
-using System.Runtime.InteropServices;
-
 namespace SafeFiles;
 
 /// <summary>
@@ -10,8 +8,6 @@ namespace SafeFiles;
 /// </summary>
 public static class OutputFile
 {
-    private const int TypeMask = 0xF000;
-
     /// <summary>Writes what <paramref name="write"/> puts in the stream to <paramref name="path"/>.</summary>
     /// <exception cref="IOException">The path names a special file other than a FIFO, or the write failed.</exception>
     /// <exception cref="UnauthorizedAccessException">The system refused the write.</exception>
@@ -47,17 +43,7 @@ public static class OutputFile
     /// </summary>
     public static string? Describe(string path)
     {
-        int? mode = null;
-        try
-        {
-            mode = OperatingSystem.IsLinux() ? LinuxMode(path) : OperatingSystem.IsMacOS() ? MacMode(path) : null;
-        }
-        catch (Exception e) when (e is DllNotFoundException or EntryPointNotFoundException)
-        {
-            // an unusual C library: fall back to what SafeFiles can tell
-        }
-
-        if (mode is null)
+        if (FileStat.TypeBitsOf(path) is not { } type)
         {
             return FileStat.KindOf(path) switch
             {
@@ -67,7 +53,7 @@ public static class OutputFile
             };
         }
 
-        return (mode & TypeMask) switch
+        return type switch
         {
             0x8000 => null,
             0x4000 => "directory",
@@ -78,35 +64,4 @@ public static class OutputFile
             _ => "special file",
         };
     }
-
-    // struct statx: stx_mask u32 @0, stx_mode u16 @28 (the same on every architecture).
-    private static int? LinuxMode(string path)
-    {
-        const int currentDirectory = -100; // AT_FDCWD
-        const uint typeWanted = 0x1; // STATX_TYPE
-        var buffer = new byte[256];
-        if (StatX(currentDirectory, path, 0, typeWanted, buffer) != 0 || (MemoryMarshal.Read<uint>(buffer) & typeWanted) == 0)
-        {
-            return null;
-        }
-
-        return MemoryMarshal.Read<ushort>(buffer.AsSpan(28));
-    }
-
-    // struct stat with 64-bit inodes: st_mode u16 @4.
-    private static int? MacMode(string path)
-    {
-        var buffer = new byte[512];
-        int result = RuntimeInformation.ProcessArchitecture == Architecture.X64 ? MacStatX64(path, buffer) : MacStat(path, buffer);
-        return result != 0 ? null : MemoryMarshal.Read<ushort>(buffer.AsSpan(4));
-    }
-
-    [DllImport("libc", EntryPoint = "statx", SetLastError = true)]
-    private static extern int StatX(int directory, [MarshalAs(UnmanagedType.LPUTF8Str)] string path, int flags, uint mask, [Out] byte[] buffer);
-
-    [DllImport("libc", EntryPoint = "stat", SetLastError = true)]
-    private static extern int MacStat([MarshalAs(UnmanagedType.LPUTF8Str)] string path, [Out] byte[] buffer);
-
-    [DllImport("libc", EntryPoint = "stat$INODE64", SetLastError = true)]
-    private static extern int MacStatX64([MarshalAs(UnmanagedType.LPUTF8Str)] string path, [Out] byte[] buffer);
 }

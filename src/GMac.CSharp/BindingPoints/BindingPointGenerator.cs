@@ -125,6 +125,12 @@ internal static class BindingPointGenerator
             else diagnostics.Add(e);
         }
         if (!outcome.Succeeded) return new GeneratedRegion(point, outcome, null);
+        if (CSharpEmitter.ConstantOutOfRange(outcome.Result!.Block, scalarType) is { } range)
+        {
+            diagnostics.Add(new(DiagnosticCodes.ConstantOutOfRange, SourceSpan.At(file.Path, point.RegionLineNumber, point.RegionColumn),
+                $"macro '{point.MacroName}' cannot be generated in {scalarType}: {range}"));
+            return new GeneratedRegion(point, outcome, null);
+        }
         try
         {
             var code = CSharpEmitter.Emit(outcome.Result!.Block, new CSharpEmitOptions

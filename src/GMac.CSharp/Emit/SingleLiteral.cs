@@ -16,7 +16,10 @@ public static class SingleLiteral
     private const float SmallestNormal = 1.17549435E-38f;
 
     /// <summary>The C# text of the constant as a float: shortest round-trip digits and an <c>f</c> suffix.</summary>
-    public static string Of(ConstantExpr constant) => Text(constant.Exact is { } r ? Round(r) : (float)constant.Value);
+    public static string Of(ConstantExpr constant) => Text(ValueOf(constant));
+
+    /// <summary>The float the constant prints as: infinite when it is beyond the float range.</summary>
+    public static float ValueOf(ConstantExpr constant) => constant.Exact is { } r ? Round(r) : (float)constant.Value;
 
     /// <summary>The C# text of <paramref name="value"/> with an <c>f</c> suffix, never an integer literal.</summary>
     public static string Text(float value)

@@ -104,6 +104,11 @@ internal static class ShowCommand
             }
             return ExitCodes.Diagnostics;
         }
+        if (CSharpEmitter.ConstantOutOfRange(outcome.Result!.Block, scalarType) is { } range)
+        {
+            error.WriteLine(new Diagnostic(DiagnosticCodes.ConstantOutOfRange, macroAt, $"macro '{macro}' cannot be generated in {scalarType}: {range}"));
+            return ExitCodes.Diagnostics;
+        }
         output.Write(CSharpEmitter.Emit(outcome.Result!.Block, new CSharpEmitOptions
         {
             NewLine = Environment.NewLine,

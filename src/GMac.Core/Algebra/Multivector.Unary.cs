@@ -150,7 +150,7 @@ public sealed partial class Multivector<T>
         {
             return blade.Inverse();
         }
-        catch (AlgebraException)
+        catch (AlgebraException e) when (!e.ExceedsLimit)
         {
             throw new AlgebraException(Frame.Name,
                 $"the dual needs a non-null blade, but {blade} squares to zero (a degenerate metric has no dual with respect to its pseudoscalar).");

@@ -1,3 +1,4 @@
+using GMac.Core.Algebra;
 using GMac.Core.Numerics;
 
 namespace GMac.Core.Symbolic;
@@ -222,6 +223,7 @@ public sealed partial class Scalar : IComparable<Scalar>
         if (b.TryGetConstant(out var cb)) return Scale(a, cb);
         if (x.Length == 1 && y.Length == 1)
             return InternTerm(new Term(x[0].Coefficient * y[0].Coefficient, x[0].Monomial * y[0].Monomial));
+        if ((long)x.Length * y.Length > MaxProductPairs) throw TooLarge($"a product of {x.Length} terms by {y.Length} terms needs {(long)x.Length * y.Length} term products, more than the limit of {MaxProductPairs}");
         // Accumulate by monomial (reference keys, cached hashes), then sort once. The table and
         // list are reused per thread: products are the engine's most frequent operation, and
         // fresh ones were a large share of everything it allocated.
@@ -232,11 +234,15 @@ public sealed partial class Scalar : IComparable<Scalar>
         try
         {
             foreach (var s in x)
-            foreach (var t in y)
             {
-                var m = s.Monomial * t.Monomial;
-                var c = s.Coefficient * t.Coefficient;
-                sums[m] = sums.TryGetValue(m, out var previous) ? previous + c : c;
+                foreach (var t in y)
+                {
+                    var m = s.Monomial * t.Monomial;
+                    var c = s.Coefficient * t.Coefficient;
+                    sums[m] = sums.TryGetValue(m, out var previous) ? previous + c : c;
+                }
+                // Checked per row, as the product grows: terms that cancel later are rare in expansions.
+                if (sums.Count > MaxTerms) throw TooLarge($"a product of {x.Length} terms by {y.Length} terms has more than {MaxTerms} terms, the limit");
             }
             foreach (var (m, c) in sums)
                 if (!c.IsZero) list.Add(new Term(c, m));
@@ -254,6 +260,19 @@ public sealed partial class Scalar : IComparable<Scalar>
             }
         }
     }
+
+    /// <summary>
+    /// Most terms a scalar may have. Expanding products (a polynomial to a high power) grows terms
+    /// combinatorially and every later stage costs at least as much again; the library's largest
+    /// scalar has about 6,600 terms. Exceeding it is refused as too large, a positioned diagnostic.
+    /// </summary>
+    public const int MaxTerms = 1 << 14;
+
+    /// <summary>Most term-by-term multiplications of one product: bounds its time before it starts.</summary>
+    public const long MaxProductPairs = 1L << 22;
+
+    private static AlgebraException TooLarge(string message) =>
+        new(null, $"{message}; the expression is too large to expand symbolically (restructure it, e.g. name repeated factors)") { ExceedsLimit = true };
 
     private const int MaxPooledProductTerms = 1024;
     [ThreadStatic] private static Dictionary<Monomial, Rational>? _productSums;
@@ -302,6 +321,11 @@ public sealed partial class Scalar : IComparable<Scalar>
         }
         while (i < x.Length) result[k++] = x[i++];
         for (; j < y.Length; j++) result[k++] = negateRight ? new Term(-y[j].Coefficient, y[j].Monomial) : y[j];
+        if (k > MaxTerms)
+        {
+            Array.Clear(result, 0, k);
+            throw TooLarge($"a sum of {x.Length} terms and {y.Length} terms has {k} terms, more than the limit of {MaxTerms}");
+        }
         return InternScratch(result, k);
     }
 

@@ -92,6 +92,8 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
         }
         for (var i = 0; i < count; i++)
         {
+            // A statement that reaches no output is not evaluated: unused temporaries cost nothing.
+            if (i < macro.LiveStatements.Length && !macro.LiveStatements[i]) continue;
             var context = new Context(macro, inputs, env, i, depth, state);
             try
             {

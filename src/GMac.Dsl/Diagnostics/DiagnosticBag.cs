@@ -20,6 +20,10 @@ public sealed class DiagnosticBag
     public void ReportSyntaxError(SourceSpan span, string message) => Report(DiagnosticCodes.SyntaxError, span, message);
     public void ReportNestingTooDeep(SourceSpan span, int limit) =>
         Report(DiagnosticCodes.NestingTooDeep, span, $"expression nested deeper than {limit} levels");
+    public void ReportOperatorChainTooLong(SourceSpan span, int limit) =>
+        Report(DiagnosticCodes.NestingTooDeep, span, $"expression nests more than {limit} levels deep through products, quotients, powers, signs and brackets; name parts of it");
+    public void ReportFileTooLarge(SourceSpan span, int limit) =>
+        Report(DiagnosticCodes.FileTooLarge, span, $"the file has more than {limit} tokens (words, numbers and symbols), the most gmac reads from one file; split it");
     public void ReportCannotRead(SourceSpan span, string reason) => Report(DiagnosticCodes.CannotReadDsl, span, reason);
 
     // ---- names

@@ -14,6 +14,7 @@ public static class DiagnosticCodes
     public static readonly DiagnosticDescriptor SyntaxError = new("GMAC0001", Error, "the text is not valid GMacDSL", ReportedBy.DslLoad);
     public static readonly DiagnosticDescriptor NestingTooDeep = new("GMAC0002", Error, "an expression is nested too deeply to read", ReportedBy.DslLoad);
     public static readonly DiagnosticDescriptor CannotReadDsl = new("GMAC0003", Error, "the DSL folder or one of its files cannot be read, or it holds no .gmac file", ReportedBy.DslLoad);
+    public static readonly DiagnosticDescriptor FileTooLarge = new("GMAC0004", Error, "a DSL file has more tokens than gmac reads from one file", ReportedBy.DslLoad);
 
     // ---- names
     public static readonly DiagnosticDescriptor UnknownName = new("GMAC0101", Error, "a name is not defined (a close match is suggested)", ReportedBy.DslLoad);
@@ -66,6 +67,7 @@ public static class DiagnosticCodes
     public static readonly DiagnosticDescriptor EmptyAssumption = new("GMAC0312", Error, "assumed minimum and maximum of one expression leave no value", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor GeneratedDivisionByZero = new("GMAC0313", Error, "the macro divides by an expression that is zero for these bindings", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor TooLarge = new("GMAC0314", Error, "an operation of the macro is too large to evaluate symbolically", ReportedBy.Generation);
+    public static readonly DiagnosticDescriptor ConstantOutOfRange = new("GMAC0315", Error, "a constant of the generated code is outside the range of its scalar type (float or double)", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor UnboundInput = new("GMAC0317", Error, "an input is bound by no line, or a coefficient is left out of a grade whose others are bound (write \"0\" to mean zero)", ReportedBy.Generation);
 
     // ---- binding points, C# files, verification

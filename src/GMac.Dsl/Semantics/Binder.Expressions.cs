@@ -69,23 +69,14 @@ internal sealed partial class Binder
                     _diagnostics.ReportTypeError(span, "'^' raises a scalar to a power; use 'op' for the outer product");
                     return null;
                 }
-                return CheckConstant(new BoundBinaryOperation(BinaryOperator.Power, l, r, ExpressionType.Scalar, span), pw.GetText());
+                return CheckConstant(new BoundBinaryOperation(BinaryOperator.Power, l, r, ExpressionType.Scalar, span), pw.GetText);
             }
             case ScaleExprContext s:
                 return BindScale(s, scope, span);
             case ProductExprContext p:
                 return BindProduct(p, scope, span);
             case SumExprContext s:
-            {
-                var (l, r) = (BindExpression(s.expr(0), scope), BindExpression(s.expr(1), scope));
-                if (l is null || r is null) return null;
-                if (Combine(l, r, span) is not { } frame && !(l.Type.IsScalar && r.Type.IsScalar)) return null;
-                var type = l.Type.IsScalar && r.Type.IsScalar
-                    ? ExpressionType.Scalar
-                    : new ExpressionType(l.Type.Frame ?? r.Type.Frame, l.Type.GradeMask | r.Type.GradeMask);
-                var op = s.op.Type == Syntax.Generated.GMacDslLexer.PLUS ? BinaryOperator.Add : BinaryOperator.Subtract;
-                return new BoundBinaryOperation(op, l, r, type, span);
-            }
+                return BindSum(s, scope);
             case CoefficientExprContext c:
                 return BindCoefficient(c, scope, span);
             case NameExprContext n:
@@ -110,6 +101,68 @@ internal sealed partial class Binder
                 _diagnostics.ReportSyntaxError(span, $"unexpected expression '{syntax.GetText()}'");
                 return null;
         }
+    }
+
+    /// <summary>Sums of this many operators or more are bound as a balanced tree; shorter ones left to right.</summary>
+    private const int LongSum = 64;
+
+    /// <summary>
+    /// A chain a ± b ± c …, which parses as a tree as deep as the chain is long. Its operands are
+    /// collected without recursion; a short chain is bound left to right as written, a long one as a
+    /// balanced tree (the same sum, exact in the symbolic engine) so that later stages, which recurse
+    /// over bound trees, go only logarithmically deep.
+    /// </summary>
+    private BoundExpression? BindSum(SumExprContext syntax, Scope scope)
+    {
+        var sums = new List<SumExprContext>();
+        ExprContext node = syntax;
+        while (node is SumExprContext s)
+        {
+            sums.Add(s);
+            node = s.expr(0);
+        }
+        sums.Reverse(); // innermost (leftmost) first
+        var first = BindExpression(node, scope);
+        if (sums.Count < LongSum)
+        {
+            var result = first;
+            foreach (var s in sums)
+            {
+                var right = BindExpression(s.expr(1), scope);
+                result = result is null || right is null ? null : Add(result, right, IsMinus(s), Span(s));
+            }
+            return result;
+        }
+        var operands = new List<(BoundExpression? Value, bool Negated)>(sums.Count + 1) { (first, false) };
+        foreach (var s in sums) operands.Add((BindExpression(s.expr(1), scope), IsMinus(s)));
+        return operands.Any(o => o.Value is null) ? null : Balanced(operands, 0, operands.Count);
+
+        static bool IsMinus(SumExprContext s) => s.op.Type == Syntax.Generated.GMacDslLexer.MINUS;
+    }
+
+    /// <summary>
+    /// The operands [start, end) summed with the sign of each relative to the first one's: splitting at
+    /// m, it is the left half plus or minus the right half as their first signs agree or not.
+    /// </summary>
+    private BoundExpression? Balanced(List<(BoundExpression? Value, bool Negated)> operands, int start, int end)
+    {
+        if (end - start == 1) return operands[start].Value;
+        var middle = (start + end) / 2;
+        var left = Balanced(operands, start, middle);
+        var right = Balanced(operands, middle, end);
+        if (left is null || right is null) return null;
+        var (head, tail) = (left.Span, right.Span);
+        var span = head with { Length = Math.Max(0, tail.Start + tail.Length - head.Start) };
+        return Add(left, right, operands[middle].Negated != operands[start].Negated, span);
+    }
+
+    private BoundExpression? Add(BoundExpression l, BoundExpression r, bool subtract, SourceSpan span)
+    {
+        if (Combine(l, r, span) is null && !(l.Type.IsScalar && r.Type.IsScalar)) return null;
+        var type = l.Type.IsScalar && r.Type.IsScalar
+            ? ExpressionType.Scalar
+            : new ExpressionType(l.Type.Frame ?? r.Type.Frame, l.Type.GradeMask | r.Type.GradeMask);
+        return new BoundBinaryOperation(subtract ? BinaryOperator.Subtract : BinaryOperator.Add, l, r, type, span);
     }
 
     private BoundExpression? BindNumber(NumberExprContext n, SourceSpan span)
@@ -146,20 +199,21 @@ internal sealed partial class Binder
     /// finite real value (sqrt(-4), log(0), asin(2), 0^-1): generated code would compute NaN or
     /// infinity. Null when reported.
     /// </summary>
-    private BoundExpression? CheckConstant(BoundExpression e, string text, string? divisorText = null)
+    /// <param name="text">The expression's text, read only for a message: reading it costs its length.</param>
+    private BoundExpression? CheckConstant(BoundExpression e, Func<string> text, Func<string>? divisorText = null)
     {
         if (e is BoundBinaryOperation { Operator: BinaryOperator.Divide } d)
         {
             if (NumericFolding.TryEvaluate(d.Right) is 0)
             {
-                _diagnostics.ReportDivisionByZero(e.Span, divisorText ?? text);
+                _diagnostics.ReportDivisionByZero(e.Span, (divisorText ?? text)());
                 return null;
             }
             if (!d.Type.IsScalar) return e;
         }
         if (NumericFolding.TryEvaluate(e) is { } value && !double.IsFinite(value) && OperandsAreFinite(e) && !IsPowerOverflow(e, value))
         {
-            _diagnostics.ReportNoRealValue(e.Span, text, value);
+            _diagnostics.ReportNoRealValue(e.Span, text(), value);
             return null;
         }
         return e;
@@ -196,7 +250,7 @@ internal sealed partial class Binder
             ? ExpressionType.Scalar
             : IsScalarValued(l) && !l.Type.IsScalar && IsScalarValued(r) ? l.Type
             : IsScalarValued(l) ? r.Type with { Frame = r.Type.Frame ?? l.Type.Frame } : l.Type;
-        return CheckConstant(new BoundBinaryOperation(divide ? BinaryOperator.Divide : BinaryOperator.Multiply, l, r, type, span), s.GetText(), s.expr(1).GetText());
+        return CheckConstant(new BoundBinaryOperation(divide ? BinaryOperator.Divide : BinaryOperator.Multiply, l, r, type, span), s.GetText, s.expr(1).GetText);
     }
 
     private BoundExpression? BindProduct(ProductExprContext p, Scope scope, SourceSpan span)
@@ -341,7 +395,7 @@ internal sealed partial class Binder
             }
             var bound = args.Select(a => BindExpression(a, scope)).ToList();
             if (bound.Any(b => b is null)) return null;
-            return CheckConstant(new BoundScalarFunctionCall(fn.Function, bound!, span), call.GetText());
+            return CheckConstant(new BoundScalarFunctionCall(fn.Function, bound!, span), call.GetText);
         }
         if (scope.Macro is null)
         {

@@ -100,6 +100,7 @@ internal sealed partial class Binder
         foreach (var statement in syntax.statement())
             if (BindStatement(statement, scope, context) is { } bound) statements.Add(bound);
         macro.Statements = statements;
+        macro.LiveStatements = Liveness.Of(statements, macro.Outputs);
         macro.Temporaries = context.Temporaries;
         macro.Callees = context.Callees.ToList();
 
@@ -141,10 +142,12 @@ internal sealed partial class Binder
                 _diagnostics.ReportAssignToInput(span, name);
                 return null;
             }
+            // An output assigned a value that has errors still counts as assigned: those errors are
+            // reported already, and "never assigned" would be false.
+            if (variable.Kind == VariableKind.Output) context.Assigned.Add(variable);
             if (type is not { } t) return null;
             if (variable.Kind == VariableKind.Output)
             {
-                context.Assigned.Add(variable);
                 if (variable.Class is not { } cls) return null;
                 if (t.Frame is { } frame && frame != cls.Frame)
                 {
@@ -196,7 +199,14 @@ internal sealed partial class Binder
 
     private BoundStatement? BindCallStatement(CallStatementContext c, Scope scope, MacroContext context, SourceSpan span)
     {
-        if (LookupMacro(c.name(), context) is not { } callee) return null;
+        if (LookupMacro(c.name(), context) is not { } callee)
+        {
+            // The outputs named as arguments are meant to be assigned here; the unknown macro is the error.
+            foreach (var arg in c.callArgument())
+                if (arg.expr() is NameExprContext n && context.Variables.TryGetValue(n.GetText(), out var v) && v.Kind == VariableKind.Output)
+                    context.Assigned.Add(v);
+            return null;
+        }
         var bindings = new List<BoundCallBinding>();
         var ok = true;
         foreach (var arg in c.callArgument())
@@ -383,7 +393,7 @@ internal sealed partial class Binder
                 }
                 if (factor.Type.Frame is not null && Combine(operand, factor, span) is null) return null;
                 return CheckConstant(new BoundBinaryOperation(name == "scale" ? BinaryOperator.Multiply : BinaryOperator.Divide,
-                    operand, factor, operand.Type, span), $"{name}(...)", args[1].GetText());
+                    operand, factor, operand.Type, span), () => $"{name}(...)", args[1].GetText);
             }
             case "diff":
             {

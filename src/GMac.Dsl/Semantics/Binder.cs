@@ -94,20 +94,26 @@ internal sealed partial class Binder
         ReportUnused();
     }
 
-    /// <summary>A definition is bound only if parsing it needed no recovery.</summary>
-    private static bool IsComplete(IParseTree node)
+    /// <summary>A definition is bound only if parsing it needed no recovery. Walked without
+    /// recursion: a long flat sum parses as a tree as deep as it is long.</summary>
+    private static bool IsComplete(IParseTree root)
     {
-        if (node is IErrorNode) return false;
-        if (node is ParserRuleContext rule)
+        var pending = new Stack<IParseTree>();
+        pending.Push(root);
+        while (pending.Count > 0)
         {
-            if (rule.exception is not null) return false;
-            if (rule.Stop is null) return false;
-            for (var i = 0; i < rule.ChildCount; i++)
-                if (!IsComplete(rule.GetChild(i))) return false;
-        }
-        else if (node is ITerminalNode terminal && terminal.Symbol.TokenIndex < 0)
-        {
-            return false; // a token conjured by single-token insertion
+            var node = pending.Pop();
+            if (node is IErrorNode) return false;
+            if (node is ParserRuleContext rule)
+            {
+                if (rule.exception is not null) return false;
+                if (rule.Stop is null) return false;
+                for (var i = 0; i < rule.ChildCount; i++) pending.Push(rule.GetChild(i));
+            }
+            else if (node is ITerminalNode terminal && terminal.Symbol.TokenIndex < 0)
+            {
+                return false; // a token conjured by single-token insertion
+            }
         }
         return true;
     }
@@ -129,10 +135,26 @@ internal sealed partial class Binder
 
     private bool IsBroken(string name) => _brokenNames.Contains(name);
 
+    /// <summary>
+    /// Candidates compared for "did you mean" hints, over the whole project. Each unknown name is
+    /// compared with every name in scope: thousands of both would take minutes. Past the budget,
+    /// unknown names are reported without a hint, and binding stays linear in the file's size.
+    /// </summary>
+    internal const int HintComparisons = 500_000;
+
+    private long _hintComparisonsLeft = HintComparisons;
+
     private void ReportUnknown(SourceSpan span, string kind, string name, IEnumerable<string> candidates)
     {
         if (IsBroken(name)) return;
-        _diagnostics.ReportUnknownName(span, kind, name, NameSuggester.Suggest(name, candidates));
+        string? hint = null;
+        if (_hintComparisonsLeft > 0)
+        {
+            var list = candidates as IReadOnlyCollection<string> ?? candidates.ToList();
+            _hintComparisonsLeft -= list.Count;
+            hint = NameSuggester.Suggest(name, list);
+        }
+        _diagnostics.ReportUnknownName(span, kind, name, hint);
     }
 
     // ------------------------------------------------------------------ lookups

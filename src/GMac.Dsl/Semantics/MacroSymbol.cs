@@ -10,6 +10,9 @@ public sealed class MacroSymbol(string name, SourceSpan declaration) : Symbol(na
     public IReadOnlyList<VariableSymbol> Temporaries { get; internal set; } = [];
     public IReadOnlyList<BoundStatement> Statements { get; internal set; } = [];
 
+    /// <summary>Per statement, whether it can reach an output or the output text (see <see cref="Liveness"/>); empty: all can.</summary>
+    internal bool[] LiveStatements { get; set; } = [];
+
     /// <summary>Macros this one calls, directly.</summary>
     public IReadOnlyList<MacroSymbol> Callees { get; internal set; } = [];
 }

@@ -57,6 +57,8 @@ public sealed partial class Generate_LineEndings : IDisposable
                 {
                     #region GMac : Twice
                     //GMac.Bind("u.e1", "<a>");
+                    //GMac.Bind("u.e2", "0");
+                    //GMac.Bind("u.e3", "0");
                     //GMac.Bind("w.e1", "<b>");
                     #endregion
                 }

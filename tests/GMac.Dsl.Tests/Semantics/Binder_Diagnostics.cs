@@ -1,3 +1,4 @@
+using GMac.Dsl.Syntax;
 using GMac.Dsl.Tests.Support;
 
 namespace GMac.Dsl.Tests.Semantics;
@@ -263,6 +264,38 @@ public sealed class Binder_Diagnostics
         var d = MarkedSource.AssertSingle(Macro("w = u;", outputs: "w : e3d.Vector; «z» : e3d.Vector"), "GMAC0202", DslSnippets.E3d);
         Assert.Equal("output 'z' of macro 'M' is never assigned", d.Message);
         Assert.False(d.IsError);
+    }
+
+    [Theory]
+    [InlineData("w = «uu» + v;", "GMAC0101")]
+    [InlineData("w = «u / v»;", "GMAC0116")]
+    [InlineData("call «Nope» { a : u; b : w };", "GMAC0101")]
+    public void An_error_in_assigning_an_output_is_not_followed_by_never_assigned(string performs, string code)
+    {
+        MarkedSource.AssertSingle(Macro(performs), code, DslSnippets.E3d);
+        var project = DslProject.FromSources([("test.gmac", MarkedSource.Parse(Macro(performs)).Text), ("prelude.gmac", DslSnippets.E3d)]);
+        Assert.DoesNotContain(project.Diagnostics, d => d.Code == "GMAC0202");
+    }
+
+    [Theory]
+    [InlineData("define frame a as basis: {x} Euclidean end frame\n«/*» the rest\ndefine frame b as basis: {y} Euclidean end frame")]
+    [InlineData("define frame a as basis: {x} «/*» Euclidean end frame")]
+    public void An_unclosed_block_comment_is_reported_at_its_start(string marked)
+    {
+        var d = MarkedSource.AssertSingle(marked, "GMAC0001");
+        Assert.Equal("unterminated comment: '/*' has no closing '*/'", d.Message);
+        var project = SingleFileProject.Bind(MarkedSource.Parse(marked).Text);
+        Assert.Single(project.Diagnostics);
+    }
+
+    [Fact]
+    public void A_long_chain_of_products_is_reported_as_deep_operator_nesting()
+    {
+        var factors = string.Join(" * ", Enumerable.Repeat("2", SyntaxTree.MaxOperatorChain + 2));
+        var project = SingleFileProject.Bind($"define frame a as basis: {{x}} IPM = {{{{{factors}}}}} end frame");
+        var d = Assert.Single(project.Diagnostics);
+        Assert.Equal("GMAC0002", d.Code);
+        Assert.Contains($"nests more than {SyntaxTree.MaxOperatorChain} levels deep", d.Message);
     }
 
     [Fact]
