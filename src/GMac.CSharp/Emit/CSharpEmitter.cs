@@ -3,7 +3,7 @@ using GMac.Core.CodeGeneration;
 namespace GMac.CSharp.Emit;
 
 /// <summary>The C# emitters, and the one that writes a block in the scalar type its options name.</summary>
-public static class CSharpEmitter
+public static partial class CSharpEmitter
 {
     /// <summary>Every emitter; each scalar type is written by exactly one.</summary>
     public static IReadOnlyList<ICodeEmitter> Emitters { get; } = [CSharpScalarEmitter.Instance];

@@ -1,7 +1,8 @@
 using System.Globalization;
 using System.Numerics;
+using GMac.Core.CodeGeneration;
 
-namespace GMac.Core.CodeGeneration;
+namespace GMac.CSharp.Emit;
 
 public static partial class CSharpEmitter
 {
