@@ -1,10 +1,6 @@
 using System.CommandLine;
 using System.Diagnostics;
-using System.Globalization;
-using System.Text;
 using GMac.CSharp.BindingPoints;
-using GMac.Dsl.Diagnostics;
-using SafeFiles;
 
 namespace GMac.Cli.Commands;
 

@@ -1,9 +1,5 @@
 using System.CommandLine;
-using System.Globalization;
 using GMac.CSharp.BindingPoints;
-using GMac.CSharp.Verification;
-using GMac.Dsl.Diagnostics;
-using GMac.Dsl.Generation;
 
 namespace GMac.Cli.Commands;
 
