@@ -7,6 +7,7 @@ using Microsoft.CodeAnalysis;
 using Microsoft.CodeAnalysis.CSharp;
 using Microsoft.CodeAnalysis.CSharp.Syntax;
 using Diagnostic = GMac.Dsl.Diagnostics.Diagnostic;
+using DiagnosticDescriptor = GMac.Dsl.Diagnostics.DiagnosticDescriptor;
 
 namespace GMac.CSharp.BindingPoints;
 
@@ -106,9 +107,20 @@ internal static class BindingPointGenerator
     {
         if (ScalarTypeOf(file, point, context, diagnostics) is not { } scalarType) return new GeneratedRegion(point, null, null);
         GenerationOutcome outcome;
+        string? code;
+        (DiagnosticDescriptor Descriptor, string Message)? problem;
         try
         {
-            outcome = MacroGeneration.Generate(context, point.MacroName, point.Specs, point.RegionLineNumber, file.Path);
+            (outcome, code, problem) = MacroGeneration.GenerateCode(context, point.MacroName, point.Specs, point.RegionLineNumber, file.Path, generated => new CSharpEmitOptions
+            {
+                Indent = point.Indent,
+                NewLine = point.NewLine,
+                IncludeStatistics = includeStatistics,
+                IsNameTaken = isTaken,
+                ScalarType = scalarType,
+                DeclareOutputs = generated.Plan?.DefaultOutputs ?? false,
+                MayOverwrite = BindingExpressions.Overwrites(generated.Result!.Block, point.Scope.Storage),
+            });
         }
         catch (Exception e) when (e is not OutOfMemoryException)
         {
@@ -124,32 +136,9 @@ internal static class BindingPointGenerator
             else if (e.Span.Line == point.RegionLineNumber && e.Span.Column == 1) diagnostics.Add(e with { Span = e.Span with { Column = point.RegionColumn } });
             else diagnostics.Add(e);
         }
-        if (!outcome.Succeeded) return new GeneratedRegion(point, outcome, null);
-        if (CSharpEmitter.ConstantOutOfRange(outcome.Result!.Block, scalarType) is { } range)
-        {
-            diagnostics.Add(new(DiagnosticCodes.ConstantOutOfRange, SourceSpan.At(file.Path, point.RegionLineNumber, point.RegionColumn),
-                $"macro '{point.MacroName}' cannot be generated in {scalarType}: {range}"));
-            return new GeneratedRegion(point, outcome, null);
-        }
-        try
-        {
-            var code = CSharpEmitter.Emit(outcome.Result!.Block, new CSharpEmitOptions
-            {
-                Indent = point.Indent,
-                NewLine = point.NewLine,
-                IncludeStatistics = includeStatistics,
-                IsNameTaken = isTaken,
-                ScalarType = scalarType,
-                DeclareOutputs = outcome.Plan?.DefaultOutputs ?? false,
-                MayOverwrite = BindingExpressions.Overwrites(outcome.Result.Block, point.Scope.Storage),
-            });
-            return new GeneratedRegion(point, outcome, code) { ScalarType = scalarType };
-        }
-        catch (InvalidOperationException e)
-        {
-            diagnostics.Add(new(DiagnosticCodes.InternalError, SourceSpan.At(file.Path, point.RegionLineNumber, point.RegionColumn), $"cannot print the code of macro '{point.MacroName}': {e.Message}"));
-            return new GeneratedRegion(point, outcome, null);
-        }
+        if (problem is { } p)
+            diagnostics.Add(new(p.Descriptor, SourceSpan.At(file.Path, point.RegionLineNumber, point.RegionColumn), p.Message));
+        return code is null ? new GeneratedRegion(point, outcome, null) : new GeneratedRegion(point, outcome, code) { ScalarType = scalarType };
     }
 
     /// <summary>

@@ -84,10 +84,20 @@ internal static class ShowCommand
             ? symbol.Declaration
             : SourceSpan.None(dsl[0]);
         GenerationOutcome outcome;
+        string? code;
+        (DiagnosticDescriptor Descriptor, string Message)? problem;
         try
         {
             // The specs come from options, not a file: their "line" is the option's number.
-            outcome = MacroGeneration.Generate(context, macro, specs, 0, filePath: "");
+            (outcome, code, problem) = MacroGeneration.GenerateCode(context, macro, specs, 0, filePath: "", generated => new CSharpEmitOptions
+            {
+                NewLine = Environment.NewLine,
+                IncludeStatistics = stats,
+                ScalarType = scalarType,
+                // Outputs no --bind names get default names, declared as the region would declare them.
+                DeclareOutputs = generated.Plan?.DefaultOutputs ?? false,
+                MayOverwrite = BindingExpressions.Overwrites(generated.Result!.Block),
+            });
         }
         catch (Exception e) when (e is not OutOfMemoryException)
         {
@@ -104,20 +114,12 @@ internal static class ShowCommand
             }
             return ExitCodes.Diagnostics;
         }
-        if (CSharpEmitter.ConstantOutOfRange(outcome.Result!.Block, scalarType) is { } range)
+        if (problem is { } p)
         {
-            error.WriteLine(new Diagnostic(DiagnosticCodes.ConstantOutOfRange, macroAt, $"macro '{macro}' cannot be generated in {scalarType}: {range}"));
+            error.WriteLine(new Diagnostic(p.Descriptor, macroAt, p.Message));
             return ExitCodes.Diagnostics;
         }
-        output.Write(CSharpEmitter.Emit(outcome.Result!.Block, new CSharpEmitOptions
-        {
-            NewLine = Environment.NewLine,
-            IncludeStatistics = stats,
-            ScalarType = scalarType,
-            // Outputs no --bind names get default names, declared as the region would declare them.
-            DeclareOutputs = outcome.Plan?.DefaultOutputs ?? false,
-            MayOverwrite = BindingExpressions.Overwrites(outcome.Result.Block),
-        }));
+        output.Write(code);
         return ExitCodes.Success;
     }
 
