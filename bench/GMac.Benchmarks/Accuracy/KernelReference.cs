@@ -24,7 +24,7 @@ public sealed class KernelReference
     {
         _subject = kernel as IAccuracySubject
             ?? throw new InvalidOperationException($"{kernel.MacroName}: the kernel does not expose its inputs and outputs (derive it from GaKernel)");
-        var regions = BindLineParser.RegionsOf(kernel.GetType().Name, kernel.MacroName);
+        var regions = KernelRegions.RegionsOf(kernel.GetType().Name, kernel.MacroName);
         if (regions.Count != 1)
             throw new InvalidOperationException($"{kernel.MacroName}: the accuracy reference needs exactly one binding point, found {regions.Count}");
         var outcome = generator.Generate(kernel.MacroName, regions[0]);

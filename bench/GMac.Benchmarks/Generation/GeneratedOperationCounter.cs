@@ -9,7 +9,7 @@ public sealed class GeneratedOperationCounter(MacroCodeGenerator generator)
 {
     public OperationCount Count(IGaKernel kernel)
     {
-        var regions = BindLineParser.RegionsOf(kernel.GetType().Name, kernel.MacroName);
+        var regions = KernelRegions.RegionsOf(kernel.GetType().Name, kernel.MacroName);
         if (regions.Count == 0) throw new InvalidOperationException($"{kernel.GetType().Name} has no binding point of macro {kernel.MacroName}.");
         int adds = 0, muls = 0, divs = 0, calls = 0;
         foreach (var bindings in regions)

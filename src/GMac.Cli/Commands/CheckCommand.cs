@@ -1,5 +1,6 @@
 using System.CommandLine;
 using System.Globalization;
+using GMac.CSharp.Emit;
 using GMac.Dsl;
 
 namespace GMac.Cli.Commands;
@@ -33,9 +34,10 @@ internal static class CheckCommand
             error.WriteLine($"gmac check: internal error while checking '{string.Join("', '", dsl)}': {e.Message}");
             return ExitCodes.Diagnostics;
         }
-        foreach (var diagnostic in project.Diagnostics) error.WriteLine(diagnostic);
-        var errors = project.Diagnostics.Count(d => d.IsError);
-        var warnings = project.Diagnostics.Count - errors;
+        var diagnostics = OutputBlockCheck.Diagnostics(project);
+        foreach (var diagnostic in diagnostics) error.WriteLine(diagnostic);
+        var errors = diagnostics.Count(d => d.IsError);
+        var warnings = diagnostics.Count - errors;
         output.WriteLine($"{project.SyntaxTrees.Count} file(s), {project.Model.Macros.Count} macro(s): {errors} error(s), {warnings} warning(s)");
         if (timing)
         {

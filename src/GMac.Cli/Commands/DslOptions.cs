@@ -1,6 +1,6 @@
 using System.CommandLine;
 using System.CommandLine.Parsing;
-using GMac.Cli.BindingPoints;
+using GMac.CSharp.BindingPoints;
 
 namespace GMac.Cli.Commands;
 

@@ -19,7 +19,7 @@ internal static class SharedOptions
     /// </summary>
     public static Option<string> Scalar(string what)
     {
-        var types = GMac.Core.CodeGeneration.CSharpEmitOptions.ScalarTypes;
+        var types = GMac.CSharp.Emit.CSharpEmitter.ScalarTypes;
         var option = new Option<string>("--scalar")
         {
             Description = what,

@@ -1,9 +1,8 @@
 using System.CommandLine;
 using System.CommandLine.Parsing;
-using GMac.Cli.BindingPoints;
-using GMac.Core.CodeGeneration;
+using GMac.CSharp.BindingPoints;
+using GMac.CSharp.Emit;
 using GMac.Core.Numerics;
-using GMac.Dsl.BindingPoints;
 using GMac.Dsl.Diagnostics;
 using GMac.Dsl.Generation;
 
@@ -74,7 +73,7 @@ internal static class ShowCommand
     {
         // Every value was checked by the option's validator.
         var specs = values.Select((v, i) => ParseSpec(v.Option, v.Value, i + 1)!).ToList();
-        var context = DslLoader.Load(dsl, cache, error);
+        var context = DslLoader.Load(dsl, cache ?? DslOptions.DefaultCacheDirectory(dsl), error);
         if (context is null) return ExitCodes.Diagnostics;
         // Default bindings get line 0 so their errors are not blamed on a --bind option.
         if (specs.Count == 0 || specs.All(s => s is AssumptionSpec))
@@ -85,10 +84,20 @@ internal static class ShowCommand
             ? symbol.Declaration
             : SourceSpan.None(dsl[0]);
         GenerationOutcome outcome;
+        string? code;
+        (DiagnosticDescriptor Descriptor, string Message)? problem;
         try
         {
             // The specs come from options, not a file: their "line" is the option's number.
-            outcome = BindingTextCheck.Generate(context, macro, specs, 0, filePath: "");
+            (outcome, code, problem) = MacroGeneration.GenerateCode(context, macro, specs, 0, filePath: "", generated => new CSharpEmitOptions
+            {
+                NewLine = Environment.NewLine,
+                IncludeStatistics = stats,
+                ScalarType = scalarType,
+                // Outputs no --bind names get default names, declared as the region would declare them.
+                DeclareOutputs = generated.Plan?.DefaultOutputs ?? false,
+                MayOverwrite = BindingExpressions.Overwrites(generated.Result!.Block),
+            });
         }
         catch (Exception e) when (e is not OutOfMemoryException)
         {
@@ -105,20 +114,12 @@ internal static class ShowCommand
             }
             return ExitCodes.Diagnostics;
         }
-        if (CSharpEmitter.ConstantOutOfRange(outcome.Result!.Block, scalarType) is { } range)
+        if (problem is { } p)
         {
-            error.WriteLine(new Diagnostic(DiagnosticCodes.ConstantOutOfRange, macroAt, $"macro '{macro}' cannot be generated in {scalarType}: {range}"));
+            error.WriteLine(new Diagnostic(p.Descriptor, macroAt, p.Message));
             return ExitCodes.Diagnostics;
         }
-        output.Write(CSharpEmitter.Emit(outcome.Result!.Block, new CSharpEmitOptions
-        {
-            NewLine = Environment.NewLine,
-            IncludeStatistics = stats,
-            ScalarType = scalarType,
-            // Outputs no --bind names get default names, declared as the region would declare them.
-            DeclareOutputs = outcome.Plan?.DefaultOutputs ?? false,
-            MayOverwrite = BindingExpressions.Overwrites(outcome.Result.Block),
-        }));
+        output.Write(code);
         return ExitCodes.Success;
     }
 
@@ -135,9 +136,9 @@ internal static class ShowCommand
         if (dot < 0)
         {
             var colon = value.IndexOf(':');
-            return colon <= 0 || colon == value.Length - 1 ? null : new ClassBindingSpec(name, value[..colon].Trim(), value[(colon + 1)..].Trim(), index, 1);
+            return colon <= 0 || colon == value.Length - 1 ? null : BindingValueReader.ClassBinding(name, value[..colon].Trim(), value[(colon + 1)..].Trim(), index, 1);
         }
         if (dot == 0 || dot == name.Length - 1) return null;
-        return new CoefficientBindingSpec(name[..dot], name[(dot + 1)..], value, value.Contains('<'), index, 1);
+        return new CoefficientBindingSpec(name[..dot], name[(dot + 1)..], BindingValueReader.ReadCommandLine(value), index, 1);
     }
 }

@@ -1,6 +1,5 @@
 using GMac.Core.Algebra;
 using GMac.Core.Symbolic;
-using GMac.Dsl.BindingPoints;
 using GMac.Dsl.Compilation;
 using GMac.Dsl.Diagnostics;
 using GMac.Dsl.Semantics;
@@ -48,10 +47,10 @@ public sealed partial class MacroCodeGenerator
             errors.Add(Problem(DiagnosticCodes.NotACoefficient, $"'{key}' is not a coefficient of class '{parameter.Class.QualifiedName}' of output '{parameter.Name}'", c.Line, c.Column));
             return;
         }
-        var target = c.IsTemplate ? TemplateTarget(c.Value) : c.Value.Trim();
+        var target = c.Value.Target;
         if (string.IsNullOrWhiteSpace(target))
         {
-            errors.Add(Problem(DiagnosticCodes.OutputNotATarget, $"output '{key}' must be bound to an assignable target such as \"<wx>\", not \"{c.Value}\"", c.Line, c.Column));
+            errors.Add(Problem(DiagnosticCodes.OutputNotATarget, $"output '{key}' must be bound to an assignable target such as \"<wx>\", not \"{c.Value.Text}\"", c.Line, c.Column));
             return;
         }
         if (!outputs.TryAdd(key, (parameter, blade.Id, sign)))
@@ -62,50 +61,39 @@ public sealed partial class MacroCodeGenerator
         outputTargets[key] = target;
     }
 
-    /// <summary>"&lt;wx&gt;" → "wx"; anything else around the brackets makes it no target.</summary>
-    private static string? TemplateTarget(string text)
-    {
-        text = text.Trim();
-        return text.Length > 2 && text[0] == '<' && text[^1] == '>' && text.IndexOf('<', 1) < 0 ? text[1..^1].Trim() : null;
-    }
-
-    /// <summary>An input value: a number, a bare target-language expression, or a scalar expression over &lt;…&gt; parts.</summary>
+    /// <summary>An input value: a number, a bare target-language expression, or a scalar expression over its holes.</summary>
     private static Scalar? ParseValue(CoefficientBindingSpec c, AtomTable atoms, List<Diagnostic> errors)
     {
-        var text = c.Value.Trim();
-        if (!c.IsTemplate)
-            return Core.Numerics.Rational.TryParse(text, out var number) ? Scalar.Constant(number) : Atom(text, atoms);
-
-        var expression = new System.Text.StringBuilder();
-        var i = 0;
-        while (i < text.Length)
+        switch (c.Value)
         {
-            if (text[i] != '<') { expression.Append(text[i++]); continue; }
-            var close = BindingExpressions.TemplateClose(text, i);
-            if (close < 0)
-            {
-                errors.Add(Problem(DiagnosticCodes.InvalidBindingValue, $"unbalanced '<' in \"{c.Value}\"", c.Line, c.Column));
+            case NumberValue n:
+                return Scalar.Constant(n.Value);
+            case HostExpression h:
+                return Atom(h with { Text = h.Text.Trim() }, atoms);
+            case TemplateValue { Problem: { } problem } t:
+                errors.Add(Problem(DiagnosticCodes.InvalidBindingValue, $"{problem} in \"{t.Text}\"", c.Line, c.Column));
                 return null;
-            }
-            expression.Append(Atom(text[(i + 1)..close], atoms).ToString());
-            i = close + 1;
         }
+        var template = (TemplateValue)c.Value;
+        var expression = new System.Text.StringBuilder();
+        foreach (var part in template.Parts)
+            expression.Append(part is TemplateHole hole ? Atom(hole.Expression, atoms).ToString() : ((ScalarTextPart)part).Text);
         try
         {
             var value = Scalar.Parse(expression.ToString());
             var stray = value.Variables.FirstOrDefault(v => !v.StartsWith(AtomPrefix, StringComparison.Ordinal));
             if (stray is null) return value;
-            errors.Add(Problem(DiagnosticCodes.InvalidBindingValue, $"\"{c.Value}\" names '{stray}', which is neither a number nor a <target-language expression>", c.Line, c.Column));
+            errors.Add(Problem(DiagnosticCodes.InvalidBindingValue, $"\"{c.Value.Text}\" names '{stray}', which is neither a number nor a <target-language expression>", c.Line, c.Column));
         }
         catch (ScalarSyntaxException e)
         {
-            errors.Add(Problem(DiagnosticCodes.InvalidBindingValue, $"\"{c.Value}\" is not a valid scalar expression: {e.Message}", c.Line, c.Column));
+            errors.Add(Problem(DiagnosticCodes.InvalidBindingValue, $"\"{c.Value.Text}\" is not a valid scalar expression: {e.Message}", c.Line, c.Column));
         }
         return null;
     }
 
-    /// <summary>The variable for a C# expression read by the code; one with effects (a call, an increment) is evaluated once.</summary>
-    private static Scalar Atom(string text, AtomTable atoms) => atoms.For(BindingExpressions.HasEffects(text) ? atoms.Once(text) : text);
+    /// <summary>The variable for a host expression read by the code; one with effects (a call, an increment) is evaluated once.</summary>
+    private static Scalar Atom(HostExpression expression, AtomTable atoms) => atoms.For(expression.HasEffects ? atoms.Once(expression.Text) : expression.Text);
 
     private Assumptions BindClass(MacroSymbol macro, ClassBindingSpec c, AtomTable atoms,
         Dictionary<(VariableSymbol, int), Scalar> inputValues,
@@ -132,7 +120,7 @@ public sealed partial class MacroCodeGenerator
         if (parameter.Kind == VariableKind.Input)
         {
             // An object with effects (Next(), a[i++]) is read once, not once per coefficient.
-            if (BindingExpressions.HasEffects(target)) target = atoms.Once(target);
+            if (c.TargetHasEffects) target = atoms.Once(target);
             var observer = new EvaluationObserver<Scalar> { Member = path => atoms.For(Member(path)) };
             foreach (var coefficient in binding.Coefficients)
             {

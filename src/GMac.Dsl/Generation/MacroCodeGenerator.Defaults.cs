@@ -24,7 +24,7 @@ public sealed partial class MacroCodeGenerator
             {
                 var blade = frame.BladeName(new BasisBlade(id));
                 var name = id == 0 ? $"{parameter.Name}_s" : $"{parameter.Name}_{blade.Replace('^', '_')}";
-                bindings.Add(new CoefficientBindingSpec(parameter.Name, blade, name, false, 1, 1));
+                bindings.Add(new CoefficientBindingSpec(parameter.Name, blade, new HostExpression(name, HasEffects: false), 1, 1));
             }
         }
         return bindings;

@@ -1,5 +1,4 @@
 using System.Collections.Concurrent;
-using System.Text.RegularExpressions;
 using GMac.Core.Algebra;
 using GMac.Core.CodeGeneration;
 using GMac.Core.Numerics;
@@ -140,7 +139,7 @@ public sealed partial class MacroCodeGenerator
             {
                 Name = recorder is null ? null : recorder.Record,
                 NameStatementsOnly = recorder?.StatementsOnly ?? false,
-                OutputText = (o, values) => statements.Add(Verbatim(o.Text, values)),
+                OutputText = (o, values) => statements.Add(Verbatim(o, values)),
             };
             var results = _compiler.Evaluator.Evaluate(macro, inputs, observer);
             foreach (var (key, (parameter, blade, sign)) in outputs)
@@ -214,24 +213,28 @@ public sealed partial class MacroCodeGenerator
         return isMinimum ? assumptions.WithMinimum(variable, value) : assumptions.WithMaximum(variable, value);
     }
 
-    private static SymbolicVerbatim Verbatim(string text, IReadOnlyList<Scalar> values)
+    /// <summary>The block's parts with the values of its references, in order.</summary>
+    private static SymbolicVerbatim Verbatim(BoundOutputStatement output, IReadOnlyList<Scalar> values)
     {
+        // Text, value, text, …, text: a reference always stands between two texts (empty ones included).
         var parts = new List<(string?, Scalar?)>();
-        var last = 0;
         var i = 0;
-        foreach (Match m in Placeholder().Matches(text))
+        var text = "";
+        foreach (var part in output.Parts)
         {
-            parts.Add((text[last..m.Index], null));
+            if (part is not OutputReferencePart)
+            {
+                text = part.Text;
+                continue;
+            }
+            parts.Add((text, null));
             parts.Add((null, i < values.Count ? values[i] : Scalar.Zero));
+            text = "";
             i++;
-            last = m.Index + m.Length;
         }
-        parts.Add((text[last..], null));
+        parts.Add((text, null));
         return new SymbolicVerbatim(parts);
     }
-
-    [GeneratedRegex(@"<\s*[A-Za-z_][A-Za-z_0-9]*\s*\.\s*[A-Za-z_0-9^\s]+?\s*>")]
-    private static partial Regex Placeholder();
 
     /// <summary>The macro run on doubles: the independent reference that <c>gmac verify</c> checks generated code against.</summary>
     private IReadOnlyDictionary<string, double> NumericReference(MacroSymbol macro, Dictionary<(VariableSymbol, int), Scalar> inputValues,

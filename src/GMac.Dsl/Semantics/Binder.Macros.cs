@@ -271,21 +271,29 @@ internal sealed partial class Binder
         var raw = o.OUTPUT_BLOCK().GetText();
         var open = raw.IndexOf('{');
         var text = raw[(open + 1)..^1];
-        if (OutputTextCheck.Problem(text, OutputReference) is { } problem)
-            _diagnostics.ReportInvalidOutputText(OutputTextCheck.SpanAt(span, raw, open + 1 + problem.Offset), problem.Message);
-        var references = new List<BoundCoefficient>();
+        // The one reading of the <mv.blade> references: the generator and the host's check of the
+        // text take these parts, not the text.
+        var parts = new List<OutputPart>();
+        var last = 0;
         foreach (Match match in OutputReference.Matches(text))
         {
-            if (scope.Macro!.Read(match.Groups[1].Value, span) is not { } operand) continue;
-            if (operand.Type.Frame is not { } frame)
-            {
-                _diagnostics.ReportTypeError(span, $"'{match.Groups[1].Value}' is a scalar and has no blade coefficients");
-                continue;
-            }
-            var blade = ParseBladeText(match.Groups[2].Value, frame, span);
-            if (blade is { } b) references.Add(new BoundCoefficient(operand, b, span));
+            if (match.Index > last) parts.Add(new OutputTextPart(text[last..match.Index]));
+            last = match.Index + match.Length;
+            parts.Add(new OutputReferencePart(match.Value, BindOutputReference(match, scope, span)));
         }
-        return new BoundOutputStatement(text, references, span);
+        if (last < text.Length) parts.Add(new OutputTextPart(text[last..]));
+        return new BoundOutputStatement(parts, span.Offset(raw, open + 1), span);
+    }
+
+    private BoundCoefficient? BindOutputReference(Match match, Scope scope, SourceSpan span)
+    {
+        if (scope.Macro!.Read(match.Groups[1].Value, span) is not { } operand) return null;
+        if (operand.Type.Frame is not { } frame)
+        {
+            _diagnostics.ReportTypeError(span, $"'{match.Groups[1].Value}' is a scalar and has no blade coefficients");
+            return null;
+        }
+        return ParseBladeText(match.Groups[2].Value, frame, span) is { } b ? new BoundCoefficient(operand, b, span) : null;
     }
 
     private BladeReference? ParseBladeText(string text, FrameSymbol frame, SourceSpan span)

@@ -1,5 +1,5 @@
-using GMac.Cli.BindingPoints;
-using GMac.Cli.Tests.Support;
+using GMac.CSharp.BindingPoints;
+using GMac.CSharp.Tests.Support;
 using GMac.Dsl;
 
 namespace GMac.Cli.Tests.BindingPoints;

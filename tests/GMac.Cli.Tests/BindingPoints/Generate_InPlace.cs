@@ -1,4 +1,4 @@
-using GMac.Cli.Tests.Support;
+using GMac.CSharp.Tests.Support;
 
 namespace GMac.Cli.Tests.BindingPoints;
 

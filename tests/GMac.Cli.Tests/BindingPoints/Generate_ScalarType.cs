@@ -1,5 +1,5 @@
 using System.Text.RegularExpressions;
-using GMac.Cli.Tests.Support;
+using GMac.CSharp.Tests.Support;
 
 namespace GMac.Cli.Tests.BindingPoints;
 

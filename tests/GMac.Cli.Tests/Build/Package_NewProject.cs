@@ -1,5 +1,5 @@
 using System.Globalization;
-using GMac.Cli.Tests.Support;
+using GMac.CSharp.Tests.Support;
 
 namespace GMac.Cli.Tests.Build;
 

@@ -2,7 +2,7 @@ using System.Reflection;
 using Microsoft.CodeAnalysis;
 using Microsoft.CodeAnalysis.CSharp;
 
-namespace GMac.Cli.Tests.Support;
+namespace GMac.CSharp.Tests.Support;
 
 /// <summary>The code <c>gmac show</c> prints for some bindings, compiled into a method over a struct V of x, y, z.</summary>
 internal sealed class ShownKernel(MethodInfo run, Type vector)

@@ -1,7 +1,7 @@
 using System.Text.RegularExpressions;
-using GMac.Cli.Commands;
-using GMac.Cli.Tests.Support;
-using GMac.Cli.Verification;
+using GMac.CSharp.BindingPoints;
+using GMac.CSharp.Tests.Support;
+using GMac.CSharp.Verification;
 
 namespace GMac.Cli.Tests.Verification;
 
@@ -87,7 +87,7 @@ public sealed class Verify_InProjectContext : IDisposable
     {
         var path = WriteProject("<w.z>");
         var context = SharedDsl.Context;
-        var generation = GenerateCommand.GenerateFile(path, context, stats: false, new StringWriter())!;
+        var generation = SourceGeneration.GenerateFile(path, context, stats: false, new StringWriter())!;
         Assert.True(generation.Succeeded);
         // A body whose temporary reads itself, as a clashing name would make it.
         var region = generation.Regions[0];

@@ -27,7 +27,7 @@ public class CodeGenerator_Kernels
         var s = result.Statistics;
         Assert.Equal((6, 3, 0, 0), (s.Multiplications, s.Additions, s.Divisions, s.Temporaries));
         Assert.Equal(3, result.Block.Statements.Count);
-        var code = CSharpEmitter.Emit(result.Block);
+        var code = BlockText.Of(result.Block);
         Assert.Equal(
             "w_e1 = u.y * v.z - u.z * v.y;\n" +
             "w_e2 = u.z * v.x - u.x * v.z;\n" +
@@ -74,7 +74,7 @@ public class CodeGenerator_Kernels
             new[] { "p1", "p2", "p3", "p4" }.SelectMany(p => new[] { "x", "y", "z" }.Select(c => $"{p}.{c}")).ToDictionary(k => k, k => k),
             OutputTargets("s", "no", "e1", "e2", "e3", "ni"));
         var result = CodeGenerator.Generate(request);
-        Assert.True(result.Statistics.Operations <= 100, $"{result.Form}: {result.Statistics}; other form: {result.Alternative}\n{CSharpEmitter.Emit(result.Block)}");
+        Assert.True(result.Statistics.Operations <= 100, $"{result.Form}: {result.Statistics}; other form: {result.Alternative}\n{BlockText.Of(result.Block)}");
         AssertAgreesWithNumeric(result.Block, request, 41);
     }
 

@@ -55,7 +55,7 @@ public class CodeGenerator_RotorToMatrix
         Assert.Same(Two(V("x") * V("y")) - Two(V("w") * V("z")), simplified["v1.e2"]);
 
         var result = CodeGenerator.Generate(request);
-        var code = CSharpEmitter.Emit(result.Block);
+        var code = BlockText.Of(result.Block);
         // the doubled operands of the hand-written matrix: 1 − (y·2y + z·2z), 15 additions and 9 products
         Assert.Contains("m11 = 1.0 - ", code);
         Assert.DoesNotContain("2.0 *", code);
@@ -79,7 +79,7 @@ public class CodeGenerator_RotorToMatrix
     [Fact]
     public void Without_the_constraint_the_diagonal_keeps_all_four_squares()
     {
-        var code = CSharpEmitter.Emit(CodeGenerator.Generate(Request(normalized: false)).Block);
+        var code = BlockText.Of(CodeGenerator.Generate(Request(normalized: false)).Block);
         Assert.Contains("R.w * R.w", code);
     }
 }

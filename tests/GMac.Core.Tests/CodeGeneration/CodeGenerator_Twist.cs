@@ -55,7 +55,7 @@ public class CodeGenerator_Twist
         var result = CodeGenerator.Generate(request);
         var s = result.Statistics;
         Assert.True(s.Cost < Figure66.Cost && s.Operations < Figure66.Operations,
-            $"generated {s} (cost {s.Cost}); Figure 6-6 {Figure66} (cost {Figure66.Cost})\n{CSharpEmitter.Emit(result.Block)}");
+            $"generated {s} (cost {s.Cost}); Figure 6-6 {Figure66} (cost {Figure66.Cost})\n{BlockText.Of(result.Block)}");
 
         // independent truth: Rodrigues' rotation about the axis through o, then the shift ct·a
         var random = new Random(60);

@@ -24,7 +24,7 @@ public sealed class MacroCodeGenerator_DefaultOutputs
     public void One_bound_output_leaves_the_others_uncomputed()
     {
         var outcome = Generator.Value.Generate("SphereCentreAndRadius",
-            [new ClassBindingSpec("omega", "DualSphere3D", "s", 3, 9), new CoefficientBindingSpec("radius", "1", "<r>", true, 4, 9)], regionLine: 2);
+            [new ClassBindingSpec("omega", "DualSphere3D", "s", 3, 9), new CoefficientBindingSpec("radius", "1", BindingValues.Hole("r"), 4, 9)], regionLine: 2);
         Assert.True(outcome.Succeeded, string.Join("; ", outcome.Errors));
         Assert.False(outcome.Plan!.DefaultOutputs);
         Assert.Equal(["r"], outcome.Result!.Block.OutputTargets.Values);

@@ -52,12 +52,12 @@ public sealed class MacroCodeGenerator_LargeFrames
         var bindings = new List<BindingSpec>();
         for (var i = 1; i <= 12; i++)
         {
-            bindings.Add(new CoefficientBindingSpec("u", $"a{i}", $"u{i}", false, 1, 1));
-            bindings.Add(new CoefficientBindingSpec("v", $"a{i}", $"v{i}", false, 1, 1));
+            bindings.Add(new CoefficientBindingSpec("u", $"a{i}", BindingValues.Bare($"u{i}"), 1, 1));
+            bindings.Add(new CoefficientBindingSpec("v", $"a{i}", BindingValues.Bare($"v{i}"), 1, 1));
         }
-        bindings.Add(new CoefficientBindingSpec("w", "a3^a11", "<w311>", true, 1, 1));
-        bindings.Add(new CoefficientBindingSpec("w", "a1^a2^a3", "<w123>", true, 1, 1));
-        bindings.Add(new CoefficientBindingSpec("n", "1", "<n>", true, 1, 1));
+        bindings.Add(new CoefficientBindingSpec("w", "a3^a11", BindingValues.Hole("w311"), 1, 1));
+        bindings.Add(new CoefficientBindingSpec("w", "a1^a2^a3", BindingValues.Hole("w123"), 1, 1));
+        bindings.Add(new CoefficientBindingSpec("n", "1", BindingValues.Hole("n"), 1, 1));
 
         var outcome = GenerateWithin(generator, "WedgeAndNorm", bindings);
 

@@ -29,15 +29,15 @@ public sealed class MacroCodeGenerator_UserErrors
     private static MacroCodeGenerator Generator() =>
         new(DslProject.FromSources([("test.gmac", Source), ("prelude.gmac", DslSnippets.E3d)]));
 
-    private static CoefficientBindingSpec Bind(string parameter, string blade, string value, int line) =>
-        new(parameter, blade, value, true, line, 3);
+    private static CoefficientBindingSpec Bind(string parameter, string blade, BindingValue value, int line) =>
+        new(parameter, blade, value, line, 3);
 
     [Fact]
     public void Assume_min_above_assume_max_is_reported_at_the_assumption_that_empties_the_bounds()
     {
         var outcome = Generator().Generate("Norm2",
         [
-            Bind("u", "e1", "<a>", 2), Bind("s", "1", "<r>", 3),
+            Bind("u", "e1", BindingValues.Hole("a"), 2), Bind("s", "1", BindingValues.Hole("r"), 3),
             new AssumptionSpec("a", 3, true, 4, 5), new AssumptionSpec("a", 1, false, 5, 7),
         ]);
         var error = Assert.Single(outcome.Errors);
@@ -50,7 +50,7 @@ public sealed class MacroCodeGenerator_UserErrors
     {
         var outcome = Generator().Generate("Norm2",
         [
-            new ClassBindingSpec("u", "V", "obj", 2, 3), Bind("s", "1", "<r>", 3),
+            new ClassBindingSpec("u", "V", "obj", 2, 3), Bind("s", "1", BindingValues.Hole("r"), 3),
             new AssumptionSpec("obj.x", 1, false, 6, 9),
         ]);
         var error = Assert.Single(outcome.Errors);
@@ -60,7 +60,7 @@ public sealed class MacroCodeGenerator_UserErrors
     [Fact]
     public void Binding_errors_are_placed_in_the_file_of_the_binding_point()
     {
-        var outcome = Generator().Generate("Norm2", [Bind("u", "e4", "<a>", 12), Bind("s", "1", "<r>", 13)], regionLine: 11, filePath: "src/K.cs");
+        var outcome = Generator().Generate("Norm2", [Bind("u", "e4", BindingValues.Hole("a"), 12), Bind("s", "1", BindingValues.Hole("r"), 13)], regionLine: 11, filePath: "src/K.cs");
         var error = Assert.Single(outcome.Errors);
         Assert.Equal("src/K.cs(12,3): error GMAC0303: 'e4' is not a blade of frame 'e3d' (basis vectors: e1, e2, e3)", error.ToString());
     }
@@ -70,7 +70,7 @@ public sealed class MacroCodeGenerator_UserErrors
     {
         var outcome = Generator().Generate("Norm2",
         [
-            Bind("u", "e1", "<a>", 2), Bind("u", "e2", "0", 2), Bind("u", "e3", "0", 2), Bind("s", "1", "<r>", 3),
+            Bind("u", "e1", BindingValues.Hole("a"), 2), Bind("u", "e2", BindingValues.Scalar("0"), 2), Bind("u", "e3", BindingValues.Scalar("0"), 2), Bind("s", "1", BindingValues.Hole("r"), 3),
             new AssumptionSpec("a", 1, true, 4, 5), new AssumptionSpec("a", 3, false, 5, 7),
         ]);
         Assert.True(outcome.Succeeded, string.Join("; ", outcome.Errors));

@@ -21,15 +21,17 @@ internal sealed record MarkedSource(string Text, int Line, int Column)
     }
 
     /// <summary>Binds the text and returns the single diagnostic with the given code, checking its position.</summary>
-    public static Diagnostic AssertSingle(string marked, string code, string? prelude = null)
+    /// <param name="diagnostics">What is reported of the project: by default its own diagnostics (a host adds its checks).</param>
+    public static Diagnostic AssertSingle(string marked, string code, string? prelude = null, Func<DslProject, IReadOnlyList<Diagnostic>>? diagnostics = null)
     {
         var source = Parse(marked);
         var sources = new List<(string, string)> { ("test.gmac", source.Text) };
         if (prelude is not null) sources.Add(("prelude.gmac", prelude));
         var project = DslProject.FromSources(sources);
-        var matching = project.Diagnostics.Where(d => d.Code == code).ToList();
+        var reported = diagnostics?.Invoke(project) ?? project.Diagnostics;
+        var matching = reported.Where(d => d.Code == code).ToList();
         Assert.True(matching.Count == 1,
-            $"expected one {code}, got:\n{string.Join("\n", project.Diagnostics)}");
+            $"expected one {code}, got:\n{string.Join("\n", reported)}");
         var d = matching[0];
         Assert.Equal("test.gmac", d.Span.FilePath);
         Assert.Equal((source.Line, source.Column), (d.Span.Line, d.Span.Column));

@@ -2,7 +2,7 @@ namespace GMac.Core.CodeGeneration.Passes;
 
 /// <summary>
 /// Gives the sine and the cosine of one argument a temporary each when both occur in a block, so the
-/// emitter computes them with one <c>Math.SinCos</c> (see <see cref="SinCosPairs"/>). The passes
+/// emitter can compute them together (C#'s <c>Math.SinCos</c>, one range reduction). The passes
 /// before it leave a call inside a larger expression when it is read once, as in
 /// <c>-cos ψ · sin λ</c>, which the emitter could not pair. Operation counts do not change.
 /// </summary>

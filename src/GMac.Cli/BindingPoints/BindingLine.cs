@@ -1,6 +1,0 @@
-using GMac.Dsl.Generation;
-
-namespace GMac.Cli.BindingPoints;
-
-/// <summary>One <c>//GMac.</c> line of a binding point, read into a spec (its C# text is checked by <see cref="BindingTextCheck"/>).</summary>
-internal sealed record BindingLine(BindingSpec Spec);
