@@ -4,7 +4,7 @@
 // extension (package.json) and work without the server.
 
 const vscode = require('vscode');
-const { serverCommand, initializationOptions } = require('./server-command');
+const { serverCommand, commandExists, initializationOptions } = require('./server-command');
 
 let client;
 let output;
@@ -30,15 +30,21 @@ async function start() {
     output.appendLine('gmac.enableServer is false: the language server is not started.');
     return;
   }
-  const { LanguageClient, TransportKind, State, CloseAction, ErrorAction } = require('vscode-languageclient/node');
+  const { LanguageClient, State, CloseAction, ErrorAction } = require('vscode-languageclient/node');
   const command = serverCommand(s);
   let ran = false; // the server answered initialize
   output.appendLine(`Starting ${[command.command, ...command.args].join(' ')}${s.workspaceFolder ? ` in ${s.workspaceFolder}` : ''}`);
+  if (!commandExists(command.command)) {
+    // Checked here: vscode-languageclient shows an error of its own for a command that cannot be spawned.
+    reportStartFailure(command, new Error(`${command.command} is not an executable file or a command on the PATH`));
+    return;
+  }
 
+  // Standard input and output, with no transport named: TransportKind.stdio would append --stdio
+  // to the arguments, and the server is started exactly as `gmac lsp`.
   const serverOptions = {
     command: command.command,
     args: command.args,
-    transport: TransportKind.stdio,
     options: s.workspaceFolder ? { cwd: s.workspaceFolder } : {},
   };
   const clientOptions = {
@@ -89,13 +95,18 @@ async function start() {
     const failed = client;
     client = undefined;
     try { await failed.dispose(); } catch { /* it never ran */ }
-    reportStartFailure(command, error);
+    // vscode-languageclient has already shown its error (with a button to this output): say here
+    // what to do, without a second notification.
+    reportStartFailure(command, error, false);
   }
 }
 
-function reportStartFailure(command, error) {
+function reportStartFailure(command, error, notify = true) {
   const line = [command.command, ...command.args].join(' ');
   output.appendLine(`Could not start '${line}': ${error?.message ?? error}`);
+  output.appendLine("Colours and snippets work without the server; diagnostics and hover need gmac lsp. Set 'gmac.serverPath' "
+    + "(and 'gmac.serverArgs') to a gmac that has the lsp command, or set 'gmac.enableServer' to false.");
+  if (!notify) return;
   const message = `GMacDSL: could not start the language server ('${line}'). Colours and snippets still work; `
     + "diagnostics and hover need gmac lsp. Set 'gmac.serverPath' to a gmac that has the lsp command, or turn the server off.";
   vscode.window.showWarningMessage(message, 'Open Settings', 'Turn Off', 'Show Output').then((choice) => {
@@ -120,7 +131,8 @@ function restart() {
 }
 
 function activate(context) {
-  output = vscode.window.createOutputChannel('GMacDSL');
+  // A log channel: vscode-languageclient writes to it with info(), warn(), error() and trace().
+  output = vscode.window.createOutputChannel('GMacDSL', { log: true });
   watcher = vscode.workspace.createFileSystemWatcher('**/*.gmac');
   context.subscriptions.push(
     output,

@@ -26,6 +26,20 @@ function findOnPath(name, env = process.env, platform = process.platform) {
   return undefined;
 }
 
+/** Whether command names an executable: a path to one, or a name found on the PATH. */
+function commandExists(command, env = process.env, platform = process.platform) {
+  if (path.isAbsolute(command) || command.includes('/') || (platform === 'win32' && command.includes('\\'))) {
+    try {
+      if (!fs.statSync(command).isFile()) return false;
+      if (platform !== 'win32') fs.accessSync(command, fs.constants.X_OK);
+      return true;
+    } catch {
+      return false;
+    }
+  }
+  return findOnPath(command, env, platform) !== undefined;
+}
+
 /** ${workspaceFolder} and a leading ~ in a setting. */
 function expand(value, workspaceFolder) {
   let result = String(value);
@@ -61,4 +75,4 @@ function initializationOptions(settings) {
   };
 }
 
-module.exports = { findOnPath, expand, serverCommand, initializationOptions };
+module.exports = { findOnPath, commandExists, expand, serverCommand, initializationOptions };
