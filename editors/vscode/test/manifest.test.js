@@ -48,6 +48,9 @@ test('problem matcher $gmac: the lines of gmac check and of an MSBuild build', (
     file: '/home/u/p/Program.cs', line: 40, column: 5, severity: 'warning', code: 'GMAC0411', message: 'README.md is not a C# file' });
   assert.deepEqual(problem('    C:\\src\\My Project\\K.cs(3,1): error GMAC0406: the file changed (a) [C:\\src\\p.csproj::TargetFramework=net10.0]'), {
     file: 'C:\\src\\My Project\\K.cs', line: 3, column: 1, severity: 'error', code: 'GMAC0406', message: 'the file changed (a)' });
+  // as printed by gmac check on an earlier version of test/fixtures/all-syntax.gmac
+  assert.deepEqual(problem("editors/vscode/test/fixtures/all-syntax.gmac(67,14): error GMAC0110: operands belong to different frames 'a' and 'e3d'"), {
+    file: 'editors/vscode/test/fixtures/all-syntax.gmac', line: 67, column: 14, severity: 'error', code: 'GMAC0110', message: "operands belong to different frames 'a' and 'e3d'" });
   assert.equal(problem('Program.cs(1,1): error CS1002: ; expected'), null, 'C# errors are $msCompile\'s');
   assert.equal(problem('tests: 3 passed, 0 failed, 0 skipped'), null);
 });
