@@ -141,7 +141,7 @@ public static class ThroughputReport
     private static Timing Time<TCaster>(TCaster caster, Ray[] rays, double tMax, int threads)
         where TCaster : struct, IRayCaster
     {
-        Count(caster, rays, Math.Max(1, rays.Length / 64), tMax, threads);
+        Count(caster, rays, Math.Min(rays.Length, Math.Max(1, rays.Length / 64)), tMax, threads);
         var clock = new Stopwatch();
         double bestWall = double.PositiveInfinity, bestCpu = double.PositiveInfinity;
         long count = 0;
