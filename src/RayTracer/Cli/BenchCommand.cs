@@ -79,9 +79,9 @@ internal static class BenchCommand
         }
 
         var rays = CameraRays(world);
-        var cameraName = world.Camera!.GetType().Name;
+        var cameraName = camera.Camera ?? "studio pinhole";
         ThroughputReport.Run(stdout, mesh, path, rays,
-            string.Create(CultureInfo.InvariantCulture, $"{rays.Length:N0} primary rays of a {width}x{height} {cameraName} image, 1 per pixel centre"), threads);
+            string.Create(CultureInfo.InvariantCulture, $"{rays.Length:N0} primary rays of a {width}x{height} image through the {cameraName} camera, 1 per pixel centre"), threads);
         return Application.Ok;
     }
 
