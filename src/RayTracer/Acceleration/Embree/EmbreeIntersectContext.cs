@@ -16,4 +16,7 @@ internal struct EmbreeIntersectContext
 
     /// <summary>RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT, no filter, no instance on the stack.</summary>
     public static EmbreeIntersectContext Incoherent => new() { Flags = 0, Filter = 0, InstId0 = EmbreeLibrary.InvalidGeometryId };
+
+    /// <summary>As <see cref="Incoherent"/> with RTC_INTERSECT_CONTEXT_FLAG_COHERENT: the hint for packets of neighbouring rays.</summary>
+    public static EmbreeIntersectContext Coherent => new() { Flags = 1, Filter = 0, InstId0 = EmbreeLibrary.InvalidGeometryId };
 }

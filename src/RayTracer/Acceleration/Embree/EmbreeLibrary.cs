@@ -34,6 +34,8 @@ internal static unsafe class EmbreeLibrary
     // transition (tens of nanoseconds) is skipped: with it the comparison would time the interop.
     public static delegate* unmanaged[SuppressGCTransition]<nint, EmbreeIntersectContext*, EmbreeRayHit*, void> Intersect1;
     public static delegate* unmanaged[SuppressGCTransition]<nint, EmbreeIntersectContext*, EmbreeRay*, void> Occluded1;
+    public static delegate* unmanaged[SuppressGCTransition]<int*, nint, EmbreeIntersectContext*, EmbreeRayHit8*, void> Intersect8;
+    public static delegate* unmanaged[SuppressGCTransition]<int*, nint, EmbreeIntersectContext*, EmbreeRay8*, void> Occluded8;
 
     /// <summary>Loads the library once; false with the reason when it is missing or lacks an entry point.</summary>
     public static bool TryLoad(out string? problem)
@@ -70,6 +72,8 @@ internal static unsafe class EmbreeLibrary
             ReleaseGeometry = (delegate* unmanaged<nint, void>)NativeLibrary.GetExport(handle, "rtcReleaseGeometry");
             Intersect1 = (delegate* unmanaged[SuppressGCTransition]<nint, EmbreeIntersectContext*, EmbreeRayHit*, void>)NativeLibrary.GetExport(handle, "rtcIntersect1");
             Occluded1 = (delegate* unmanaged[SuppressGCTransition]<nint, EmbreeIntersectContext*, EmbreeRay*, void>)NativeLibrary.GetExport(handle, "rtcOccluded1");
+            Intersect8 = (delegate* unmanaged[SuppressGCTransition]<int*, nint, EmbreeIntersectContext*, EmbreeRayHit8*, void>)NativeLibrary.GetExport(handle, "rtcIntersect8");
+            Occluded8 = (delegate* unmanaged[SuppressGCTransition]<int*, nint, EmbreeIntersectContext*, EmbreeRay8*, void>)NativeLibrary.GetExport(handle, "rtcOccluded8");
         }
         catch (EntryPointNotFoundException e)
         {

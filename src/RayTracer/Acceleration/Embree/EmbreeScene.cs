@@ -119,6 +119,78 @@ internal sealed unsafe class EmbreeScene : IDisposable
         return r->TFar < 0; // Embree sets tfar to −∞ on a hit
     }
 
+    /// <summary>Casts up to 8 rays as one packet with <c>rtcIntersect8</c>; bit i of the result is set when ray i hits something below <paramref name="tMax"/>.</summary>
+    [SkipLocalsInit]
+    public int IntersectNearest8(ReadOnlySpan<Ray> rays, double tMax)
+    {
+        ArgumentOutOfRangeException.ThrowIfGreaterThan(rays.Length, 8);
+        // Packet and valid mask are read with 32-byte vector loads.
+        byte* raw = stackalloc byte[sizeof(EmbreeRayHit8) + 32 + 32];
+        var packet = (EmbreeRayHit8*)(((nint)raw + 31) & ~(nint)31);
+        var valid = (int*)(packet + 1);
+        for (int i = 0; i < 8; i++)
+        {
+            valid[i] = i < rays.Length ? -1 : 0;
+            Fill(ref packet->Ray, i, i < rays.Length ? rays[i] : default, tMax);
+            packet->Hit.GeomId[i] = EmbreeLibrary.InvalidGeometryId;
+            packet->Hit.InstId0[i] = EmbreeLibrary.InvalidGeometryId;
+        }
+
+        var context = EmbreeIntersectContext.Coherent;
+        EmbreeLibrary.Intersect8(valid, _scene, &context, packet);
+        int hits = 0;
+        for (int i = 0; i < rays.Length; i++)
+        {
+            if (packet->Hit.GeomId[i] != EmbreeLibrary.InvalidGeometryId)
+                hits |= 1 << i;
+        }
+
+        return hits;
+    }
+
+    /// <summary>Casts up to 8 rays as one packet with <c>rtcOccluded8</c>; bit i of the result is set when ray i is occluded below <paramref name="tMax"/>.</summary>
+    [SkipLocalsInit]
+    public int IntersectAny8(ReadOnlySpan<Ray> rays, double tMax)
+    {
+        ArgumentOutOfRangeException.ThrowIfGreaterThan(rays.Length, 8);
+        byte* raw = stackalloc byte[sizeof(EmbreeRay8) + 32 + 32];
+        var packet = (EmbreeRay8*)(((nint)raw + 31) & ~(nint)31);
+        var valid = (int*)(packet + 1);
+        for (int i = 0; i < 8; i++)
+        {
+            valid[i] = i < rays.Length ? -1 : 0;
+            Fill(ref *packet, i, i < rays.Length ? rays[i] : default, tMax);
+        }
+
+        var context = EmbreeIntersectContext.Coherent;
+        EmbreeLibrary.Occluded8(valid, _scene, &context, packet);
+        int occluded = 0;
+        for (int i = 0; i < rays.Length; i++)
+        {
+            if (packet->TFar[i] < 0)
+                occluded |= 1 << i;
+        }
+
+        return occluded;
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static void Fill(ref EmbreeRay8 target, int lane, in Ray ray, double tMax)
+    {
+        target.OrgX[lane] = (float)ray.o.x;
+        target.OrgY[lane] = (float)ray.o.y;
+        target.OrgZ[lane] = (float)ray.o.z;
+        target.TNear[lane] = (float)ray.tMin;
+        target.DirX[lane] = (float)ray.d.x;
+        target.DirY[lane] = (float)ray.d.y;
+        target.DirZ[lane] = (float)ray.d.z;
+        target.Time[lane] = 0;
+        target.TFar[lane] = (float)tMax;
+        target.Mask[lane] = uint.MaxValue;
+        target.Id[lane] = (uint)lane;
+        target.Flags[lane] = 0;
+    }
+
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static void Fill(ref EmbreeRay target, in Ray ray, double tMax)
     {
