@@ -1,5 +1,6 @@
 using System.Diagnostics;
 using System.Globalization;
+using System.Numerics;
 using RayTracer.Acceleration.Embree;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Meshes;
@@ -103,7 +104,11 @@ public static class ThroughputReport
             embreePrimary = Time(new EmbreeNearest(embree), rays, double.PositiveInfinity, threads);
             output.WriteLine(Row("Embree rtcIntersect1", embreeBuild, embreePrimary, rays.Length, "hits"));
             long differ = CountDisagreements(new Nearest(bvh!), new EmbreeNearest(embree), rays, double.PositiveInfinity, threads);
-            output.WriteLine(Comparison(bvhPrimary, embreePrimary, "hits", differ));
+            output.WriteLine(Comparison(bvhPrimary, embreePrimary, "hits", differ, "rtcIntersect1"));
+            var packets = Time(new EmbreeNearest8(embree), rays, double.PositiveInfinity, threads);
+            output.WriteLine(Row("Embree rtcIntersect8", null, packets, rays.Length, "hits"));
+            differ = CountDisagreements(new Nearest(bvh!), new EmbreeNearest8(embree), rays, double.PositiveInfinity, threads);
+            output.WriteLine(Comparison(bvhPrimary, packets, "hits", differ, "rtcIntersect8"));
         }
 
         output.WriteLine(string.Create(culture,
@@ -115,7 +120,11 @@ public static class ThroughputReport
             var embreeShadow = Time(new EmbreeAny(embree), shadowRays, 1.0, threads);
             output.WriteLine(Row("Embree rtcOccluded1", null, embreeShadow, shadowRays.Length, "occluded"));
             long differ = CountDisagreements(new Any(bvh!), new EmbreeAny(embree), shadowRays, 1.0, threads);
-            output.WriteLine(Comparison(bvhShadow, embreeShadow, "occluded", differ));
+            output.WriteLine(Comparison(bvhShadow, embreeShadow, "occluded", differ, "rtcOccluded1"));
+            var packets = Time(new EmbreeAny8(embree), shadowRays, 1.0, threads);
+            output.WriteLine(Row("Embree rtcOccluded8", null, packets, shadowRays.Length, "occluded"));
+            differ = CountDisagreements(new Any(bvh!), new EmbreeAny8(embree), shadowRays, 1.0, threads);
+            output.WriteLine(Comparison(bvhShadow, packets, "occluded", differ, "rtcOccluded8"));
         }
     }
 
@@ -128,13 +137,13 @@ public static class ThroughputReport
             $"{name,-20} {build}   cast {timing.Wall,7:F3} s   {rays / timing.Wall / 1e6,7:F2} Mrays/s   {rays / timing.Cpu / 1e6,7:F2} Mrays per CPU-second   {counted} {timing.Count:N0}");
     }
 
-    private static string Comparison(Timing ours, Timing embree, string counted, long differ)
+    private static string Comparison(Timing ours, Timing embree, string counted, long differ, string function)
     {
         string agreement = ours.Count == embree.Count && differ == 0
             ? $"{counted} agree ray by ray ({ours.Count:N0})"
             : $"{counted} DIFFER: ours {ours.Count:N0}, Embree {embree.Count:N0}, {differ:N0} ray(s) answered differently";
         return string.Create(CultureInfo.InvariantCulture,
-            $"{"  SAH BVH / Embree",-20} {embree.Wall / ours.Wall:F2} of Embree's Mrays/s, {embree.Cpu / ours.Cpu:F2} of its Mrays per CPU-second; {agreement}");
+            $"  SAH BVH / {function}: {embree.Wall / ours.Wall:F2} of its Mrays/s, {embree.Cpu / ours.Cpu:F2} of its Mrays per CPU-second; {agreement}");
     }
 
     /// <summary>A small warm-up pass lets the JIT settle; then the best of three passes filters out interference from other work.</summary>
@@ -169,28 +178,30 @@ public static class ThroughputReport
             () => 0L,
             (chunk, _, local) =>
             {
-                int end = Math.Min(count, (chunk + 1) * ChunkSize);
-                for (int i = chunk * ChunkSize; i < end; i++)
-                {
-                    if (caster.Cast(rays[i], tMax))
-                        local++;
-                }
-
-                return local;
+                int start = chunk * ChunkSize;
+                return local + caster.Cast(rays.AsSpan(start, Math.Min(count, start + ChunkSize) - start), tMax, []);
             },
             local => Interlocked.Add(ref total, local));
         return total;
     }
 
+    /// <summary>Rays answered differently, compared chunk by chunk so that packets are cast as in the timed passes.</summary>
     private static long CountDisagreements<TOurs, TTheirs>(TOurs ours, TTheirs theirs, Ray[] rays, double tMax, int threads)
         where TOurs : struct, IRayCaster
         where TTheirs : struct, IRayCaster
     {
         long differ = 0;
-        Parallel.For(0, rays.Length, new ParallelOptions { MaxDegreeOfParallelism = threads }, i =>
+        Parallel.For(0, (rays.Length + ChunkSize - 1) / ChunkSize, new ParallelOptions { MaxDegreeOfParallelism = threads }, chunk =>
         {
-            if (ours.Cast(rays[i], tMax) != theirs.Cast(rays[i], tMax))
-                Interlocked.Increment(ref differ);
+            int start = chunk * ChunkSize, n = Math.Min(rays.Length, start + ChunkSize) - start;
+            var a = new bool[n];
+            var b = new bool[n];
+            ours.Cast(rays.AsSpan(start, n), tMax, a);
+            theirs.Cast(rays.AsSpan(start, n), tMax, b);
+            int local = 0;
+            for (int i = 0; i < n; i++)
+                local += a[i] != b[i] ? 1 : 0;
+            Interlocked.Add(ref differ, local);
         });
         return differ;
     }
@@ -312,29 +323,117 @@ public static class ThroughputReport
 
     private readonly record struct Timing(double Wall, double Cpu, long Count);
 
-    /// <summary>One query per ray; implemented by structs so that the generic loops compile to direct calls.</summary>
+    /// <summary>
+    /// Queries for a run of rays, returning how many found a hit and, when <c>answers</c> is not empty, each
+    /// ray's answer; structs, so that the generic loops compile to direct calls.
+    /// </summary>
     private interface IRayCaster
     {
-        bool Cast(in Ray ray, double tMax);
+        int Cast(ReadOnlySpan<Ray> rays, double tMax, Span<bool> answers);
     }
 
     private readonly struct Nearest(IRayIntersector structure) : IRayCaster
     {
-        public bool Cast(in Ray ray, double tMax) => structure.IntersectNearest(ray, tMax, out _, out _);
+        public int Cast(ReadOnlySpan<Ray> rays, double tMax, Span<bool> answers)
+        {
+            int count = 0;
+            for (int i = 0; i < rays.Length; i++)
+            {
+                bool hit = structure.IntersectNearest(rays[i], tMax, out _, out _);
+                count += hit ? 1 : 0;
+                if (!answers.IsEmpty)
+                    answers[i] = hit;
+            }
+
+            return count;
+        }
     }
 
     private readonly struct Any(IRayIntersector structure) : IRayCaster
     {
-        public bool Cast(in Ray ray, double tMax) => structure.IntersectAny(ray, tMax);
+        public int Cast(ReadOnlySpan<Ray> rays, double tMax, Span<bool> answers)
+        {
+            int count = 0;
+            for (int i = 0; i < rays.Length; i++)
+            {
+                bool hit = structure.IntersectAny(rays[i], tMax);
+                count += hit ? 1 : 0;
+                if (!answers.IsEmpty)
+                    answers[i] = hit;
+            }
+
+            return count;
+        }
     }
 
     private readonly struct EmbreeNearest(EmbreeScene scene) : IRayCaster
     {
-        public bool Cast(in Ray ray, double tMax) => scene.IntersectNearest(ray, tMax, out _, out _);
+        public int Cast(ReadOnlySpan<Ray> rays, double tMax, Span<bool> answers)
+        {
+            int count = 0;
+            for (int i = 0; i < rays.Length; i++)
+            {
+                bool hit = scene.IntersectNearest(rays[i], tMax, out _, out _);
+                count += hit ? 1 : 0;
+                if (!answers.IsEmpty)
+                    answers[i] = hit;
+            }
+
+            return count;
+        }
     }
 
     private readonly struct EmbreeAny(EmbreeScene scene) : IRayCaster
     {
-        public bool Cast(in Ray ray, double tMax) => scene.IntersectAny(ray, tMax);
+        public int Cast(ReadOnlySpan<Ray> rays, double tMax, Span<bool> answers)
+        {
+            int count = 0;
+            for (int i = 0; i < rays.Length; i++)
+            {
+                bool hit = scene.IntersectAny(rays[i], tMax);
+                count += hit ? 1 : 0;
+                if (!answers.IsEmpty)
+                    answers[i] = hit;
+            }
+
+            return count;
+        }
+    }
+
+    /// <summary>Packets of 8 consecutive rays (neighbouring pixels of a row).</summary>
+    private readonly struct EmbreeNearest8(EmbreeScene scene) : IRayCaster
+    {
+        public int Cast(ReadOnlySpan<Ray> rays, double tMax, Span<bool> answers)
+        {
+            int count = 0;
+            for (int i = 0; i < rays.Length; i += 8)
+            {
+                int n = Math.Min(8, rays.Length - i);
+                int mask = scene.IntersectNearest8(rays.Slice(i, n), tMax);
+                count += BitOperations.PopCount((uint)mask);
+                for (int k = 0; k < n && !answers.IsEmpty; k++)
+                    answers[i + k] = (mask & (1 << k)) != 0;
+            }
+
+            return count;
+        }
+    }
+
+    private readonly struct EmbreeAny8(EmbreeScene scene) : IRayCaster
+    {
+        public int Cast(ReadOnlySpan<Ray> rays, double tMax, Span<bool> answers)
+        {
+            int count = 0;
+            for (int i = 0; i < rays.Length; i += 8)
+            {
+                int n = Math.Min(8, rays.Length - i);
+                int mask = scene.IntersectAny8(rays.Slice(i, n), tMax);
+                count += BitOperations.PopCount((uint)mask);
+                for (int k = 0; k < n && !answers.IsEmpty; k++)
+                    answers[i + k] = (mask & (1 << k)) != 0;
+            }
+
+            return count;
+        }
     }
 }
