@@ -61,4 +61,19 @@ public class EmbreeBinding_Layout
         Assert.Equal(0, context.Filter);
         Assert.Equal(uint.MaxValue, context.InstId0);
     }
+
+    [Fact]
+    public void Packets_of_eight_hold_each_field_for_eight_rays()
+    {
+        string[] rayFields = ["OrgX", "OrgY", "OrgZ", "TNear", "DirX", "DirY", "DirZ", "Time", "TFar", "Mask", "Id", "Flags"];
+        for (int i = 0; i < rayFields.Length; i++)
+            Assert.Equal(32 * i, (int)Marshal.OffsetOf<EmbreeRay8>(rayFields[i]));
+        string[] hitFields = ["NgX", "NgY", "NgZ", "U", "V", "PrimId", "GeomId", "InstId0"];
+        for (int i = 0; i < hitFields.Length; i++)
+            Assert.Equal(32 * i, (int)Marshal.OffsetOf<EmbreeHit8>(hitFields[i]));
+        Assert.Equal(384, Marshal.SizeOf<EmbreeRay8>());
+        Assert.Equal(256, Marshal.SizeOf<EmbreeHit8>());
+        Assert.Equal(640, Marshal.SizeOf<EmbreeRayHit8>());
+        Assert.Equal(384, (int)Marshal.OffsetOf<EmbreeRayHit8>(nameof(EmbreeRayHit8.Hit)));
+    }
 }

@@ -34,6 +34,29 @@ public class EmbreeScene_AgreesWithBvh
     }
 
     [EmbreeFact]
+    public void Packets_of_eight_answer_as_single_rays_do()
+    {
+        var mesh = ThroughputReport.DisplacedSphere(2000);
+        using var embree = EmbreeScene.TryCreate(mesh, 1, out var problem);
+        Assert.True(embree is not null, problem);
+
+        var rays = ThroughputReport.PrimaryRays(40, 30);
+        for (int start = 0; start < rays.Length; start += 7) // 7: packets straddle rows and the last one is short
+        {
+            var packet = rays.AsSpan(start, Math.Min(8, rays.Length - start));
+            int hits = embree.IntersectNearest8(packet, double.PositiveInfinity);
+            int occluded = embree.IntersectAny8(packet, 2.5);
+            for (int k = 0; k < packet.Length; k++)
+            {
+                Assert.Equal(embree.IntersectNearest(packet[k], double.PositiveInfinity, out _, out _), (hits & (1 << k)) != 0);
+                Assert.Equal(embree.IntersectAny(packet[k], 2.5), (occluded & (1 << k)) != 0);
+            }
+
+            Assert.Equal(0, hits >> packet.Length);
+        }
+    }
+
+    [EmbreeFact]
     public void Any_hit_honours_the_segment_end()
     {
         var mesh = ThroughputReport.DisplacedSphere(2000);
