@@ -1,19 +1,33 @@
 using System.Diagnostics;
 using System.Globalization;
+using System.Numerics;
+using RayTracer.Acceleration.Embree;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Meshes;
 using RayTracer.Maths;
+using RayTracer.Scenes.Meshes;
 using RayTracer.Tracing;
 
 namespace RayTracer.Acceleration;
 
 /// <summary>
-/// Measures build time and primary-ray throughput (nearest hit only, no shading) of every
-/// acceleration structure on a procedural, finely tessellated displaced sphere.
+/// Measures build time and primary-ray throughput (nearest hit only, no shading) of every acceleration
+/// structure on one mesh (a procedural, finely tessellated displaced sphere, or a mesh file), then shadow
+/// rays (any hit) from the BVH's primary hits; Embree 3 casts the same rays at the same mesh alongside
+/// when <c>libembree3.so.3</c> is installed.
 /// </summary>
 public static class ThroughputReport
 {
     private const int TimedPasses = 3;
+    private const double MinPassSeconds = 0.2;
+    private const int MaxRepeats = 64;
+
+    // Rays per work item of the parallel loops: a row of the default image.
+    private const int ChunkSize = 1024;
+
+    // Shadow rays start this fraction of the mesh's bounding radius off the surface, on the side the
+    // camera sees: far beyond float rounding, so both libraries agree on which rays leave the surface.
+    private const double ShadowOffset = 1e-4;
 
     public static void Run(TextWriter output, int triangles, int width, int height, int threads)
     {
@@ -26,11 +40,32 @@ public static class ThroughputReport
 
         var clock = Stopwatch.StartNew();
         var mesh = DisplacedSphere(triangles);
-        GeometricObject[] primitives = mesh.CreateTriangles(smooth: false);
         output.WriteLine(string.Create(culture,
             $"mesh: displaced sphere, {mesh.TriangleCount:N0} triangles, {mesh.Vertices.Length:N0} vertices ({clock.Elapsed.TotalSeconds:F2} s)"));
+        Measure(output, mesh, PrimaryRays(width, height), $"{width}x{height} primary rays, 1 per pixel", threads);
+    }
+
+    /// <summary>
+    /// As <see cref="Run(TextWriter, int, int, int, int)"/> on <paramref name="mesh"/> with the given primary
+    /// rays (for example from a camera), described in the output as <paramref name="rayDescription"/>.
+    /// </summary>
+    public static void Run(TextWriter output, Mesh mesh, string meshName, Ray[] rays, string rayDescription, int threads)
+    {
+        ArgumentNullException.ThrowIfNull(output);
+        ArgumentNullException.ThrowIfNull(mesh);
+        ArgumentNullException.ThrowIfNull(rays);
+        ArgumentOutOfRangeException.ThrowIfLessThan(threads, 1);
+        output.WriteLine(string.Create(CultureInfo.InvariantCulture,
+            $"mesh: {meshName}, {mesh.TriangleCount:N0} triangles, {mesh.Vertices.Length:N0} vertices"));
+        Measure(output, mesh, rays, rayDescription, threads);
+    }
+
+    private static void Measure(TextWriter output, Mesh mesh, Ray[] rays, string rayDescription, int threads)
+    {
+        var culture = CultureInfo.InvariantCulture;
+        GeometricObject[] primitives = mesh.CreateTriangles(smooth: false);
         output.WriteLine(string.Create(culture,
-            $"rays: {width}x{height} primary rays, 1 per pixel, nearest hit only, {threads} thread(s), {Environment.ProcessorCount} logical processor(s), best of {TimedPasses} passes"));
+            $"rays: {rayDescription}, nearest hit only, {threads} thread(s), {Environment.ProcessorCount} logical processor(s), best of {TimedPasses} passes, each repeating the ray set for {MinPassSeconds} s or more (at most {MaxRepeats} times), times per ray set"));
 
         var builders = new (string Name, Func<GeometricObject[], AccelerationStructure> Build)[]
         {
@@ -39,64 +74,197 @@ public static class ThroughputReport
             ("SAH BVH", p => new Bvh(p)),
         };
 
+        AccelerationStructure? bvh = null;
+        var clock = new Stopwatch();
+        Timing bvhPrimary = default;
         foreach (var (name, build) in builders)
         {
             GC.Collect();
             clock.Restart();
             var structure = build(primitives);
             double buildSeconds = clock.Elapsed.TotalSeconds;
+            var timing = Time(new Nearest(structure), rays, double.PositiveInfinity, threads);
+            output.WriteLine(Row(name, buildSeconds, timing, rays.Length, "hits"));
+            bvh = structure;
+            bvhPrimary = timing;
+        }
 
-            // A small warm-up pass lets the JIT settle before timing; then the best of three passes
-            // is reported, which filters out interference from other work on the machine.
-            CastPrimaryRays(structure, Math.Max(1, width / 8), Math.Max(1, height / 8), threads);
-            double rays = width * (double)height;
-            double bestWall = double.PositiveInfinity, bestCpu = double.PositiveInfinity;
-            long hits = 0;
-            for (int pass = 0; pass < TimedPasses; pass++)
-            {
-                var cpuBefore = Process.GetCurrentProcess().TotalProcessorTime;
-                clock.Restart();
-                hits = CastPrimaryRays(structure, width, height, threads);
-                bestWall = Math.Min(bestWall, clock.Elapsed.TotalSeconds);
-                bestCpu = Math.Min(bestCpu, (Process.GetCurrentProcess().TotalProcessorTime - cpuBefore).TotalSeconds);
-            }
+        // The BVH's primary hits, untimed, give the shadow rays both libraries cast.
+        var shadowRays = ShadowRays(bvh!, mesh, rays, threads, out var light);
 
-            // Wall-clock rate is what a user sees; the per-CPU-second rate does not depend on how
-            // busy the machine is with other work, which makes runs on shared machines comparable.
-            output.WriteLine(string.Create(culture,
-                $"{name,-14} build {buildSeconds,7:F2} s   cast {bestWall,7:F3} s   {rays / bestWall / 1e6,7:F2} Mrays/s   {rays / bestCpu / 1e6,7:F2} Mrays per CPU-second   hits {hits:N0}"));
+        GC.Collect();
+        clock.Restart();
+        using var embree = EmbreeScene.TryCreate(mesh, threads, out var problem);
+        double embreeBuild = clock.Elapsed.TotalSeconds;
+        Timing embreePrimary = default;
+        if (embree is null)
+        {
+            output.WriteLine($"{"Embree",-20} skipped: {problem}");
+        }
+        else
+        {
+            embreePrimary = Time(new EmbreeNearest(embree), rays, double.PositiveInfinity, threads);
+            output.WriteLine(Row("Embree rtcIntersect1", embreeBuild, embreePrimary, rays.Length, "hits"));
+            long differ = CountDisagreements(new Nearest(bvh!), new EmbreeNearest(embree), rays, double.PositiveInfinity, threads);
+            output.WriteLine(Comparison(bvhPrimary, embreePrimary, "hits", differ, "rtcIntersect1"));
+            var packets = Time(new EmbreeNearest8(embree), rays, double.PositiveInfinity, threads);
+            output.WriteLine(Row("Embree rtcIntersect8", null, packets, rays.Length, "hits"));
+            differ = CountDisagreements(new Nearest(bvh!), new EmbreeNearest8(embree), rays, double.PositiveInfinity, threads);
+            output.WriteLine(Comparison(bvhPrimary, packets, "hits", differ, "rtcIntersect8"));
+        }
+
+        output.WriteLine(string.Create(culture,
+            $"shadow rays: {shadowRays.Length:N0}, from the SAH BVH's primary hits towards a point light at ({light.x:G4}, {light.y:G4}, {light.z:G4}), any hit"));
+        var bvhShadow = Time(new Any(bvh!), shadowRays, 1.0, threads);
+        output.WriteLine(Row("SAH BVH any hit", null, bvhShadow, shadowRays.Length, "occluded"));
+        if (embree is not null)
+        {
+            var embreeShadow = Time(new EmbreeAny(embree), shadowRays, 1.0, threads);
+            output.WriteLine(Row("Embree rtcOccluded1", null, embreeShadow, shadowRays.Length, "occluded"));
+            long differ = CountDisagreements(new Any(bvh!), new EmbreeAny(embree), shadowRays, 1.0, threads);
+            output.WriteLine(Comparison(bvhShadow, embreeShadow, "occluded", differ, "rtcOccluded1"));
+            var packets = Time(new EmbreeAny8(embree), shadowRays, 1.0, threads);
+            output.WriteLine(Row("Embree rtcOccluded8", null, packets, shadowRays.Length, "occluded"));
+            differ = CountDisagreements(new Any(bvh!), new EmbreeAny8(embree), shadowRays, 1.0, threads);
+            output.WriteLine(Comparison(bvhShadow, packets, "occluded", differ, "rtcOccluded8"));
         }
     }
 
-    /// <summary>Casts one ray through each pixel centre from a pinhole camera on the +z axis; returns the hit count.</summary>
-    public static long CastPrimaryRays(IRayIntersector structure, int width, int height, int threads)
+    private static string Row(string name, double? buildSeconds, Timing timing, int rays, string counted)
+    {
+        // Wall-clock rate is what a user sees; the per-CPU-second rate does not depend on how
+        // busy the machine is with other work, which makes runs on shared machines comparable.
+        string build = buildSeconds is { } b ? string.Create(CultureInfo.InvariantCulture, $"build {b,7:F2} s") : new string(' ', 15);
+        return string.Create(CultureInfo.InvariantCulture,
+            $"{name,-20} {build}   cast {timing.Wall,7:F3} s   {rays / timing.Wall / 1e6,7:F2} Mrays/s   {rays / timing.Cpu / 1e6,7:F2} Mrays per CPU-second   {counted} {timing.Count:N0}");
+    }
+
+    private static string Comparison(Timing ours, Timing embree, string counted, long differ, string function)
+    {
+        string agreement = ours.Count == embree.Count && differ == 0
+            ? $"{counted} agree ray by ray ({ours.Count:N0})"
+            : $"{counted} DIFFER: ours {ours.Count:N0}, Embree {embree.Count:N0}, {differ:N0} ray(s) answered differently";
+        return string.Create(CultureInfo.InvariantCulture,
+            $"  SAH BVH / {function}: {embree.Wall / ours.Wall:F2} of its Mrays/s, {embree.Cpu / ours.Cpu:F2} of its Mrays per CPU-second; {agreement}");
+    }
+
+    /// <summary>
+    /// A small warm-up pass lets the JIT settle; a timed pass then casts the rays as many times as it takes
+    /// to last <see cref="MinPassSeconds"/> (at most <see cref="MaxRepeats"/>), so that small meshes are not
+    /// timed at the clocks' resolution; the best of three passes, per cast of the ray set, filters out
+    /// interference from other work.
+    /// </summary>
+    private static Timing Time<TCaster>(TCaster caster, Ray[] rays, double tMax, int threads)
+        where TCaster : struct, IRayCaster
+    {
+        Count(caster, rays, Math.Min(rays.Length, Math.Max(1, rays.Length / 64)), tMax, threads);
+        var clock = Stopwatch.StartNew();
+        long count = Count(caster, rays, rays.Length, tMax, threads);
+        int repeats = (int)Math.Clamp(Math.Ceiling(MinPassSeconds / Math.Max(clock.Elapsed.TotalSeconds, 1e-9)), 1, MaxRepeats);
+        double bestWall = double.PositiveInfinity, bestCpu = double.PositiveInfinity;
+        for (int pass = 0; pass < TimedPasses; pass++)
+        {
+            // Environment.CpuUsage reads getrusage (microseconds); Process.TotalProcessorTime counts clock ticks.
+            var cpuBefore = Environment.CpuUsage.TotalTime;
+            clock.Restart();
+            for (int r = 0; r < repeats; r++)
+                Count(caster, rays, rays.Length, tMax, threads);
+            bestWall = Math.Min(bestWall, clock.Elapsed.TotalSeconds / repeats);
+            bestCpu = Math.Min(bestCpu, (Environment.CpuUsage.TotalTime - cpuBefore).TotalSeconds / repeats);
+        }
+
+        return new Timing(bestWall, Math.Max(bestCpu, 1e-9), count);
+    }
+
+    /// <summary>How many of the first <paramref name="count"/> rays the caster answers true for.</summary>
+    private static long Count<TCaster>(TCaster caster, Ray[] rays, int count, double tMax, int threads)
+        where TCaster : struct, IRayCaster
+    {
+        long total = 0;
+        Parallel.For(
+            0,
+            (count + ChunkSize - 1) / ChunkSize,
+            new ParallelOptions { MaxDegreeOfParallelism = threads },
+            () => 0L,
+            (chunk, _, local) =>
+            {
+                int start = chunk * ChunkSize;
+                return local + caster.Cast(rays.AsSpan(start, Math.Min(count, start + ChunkSize) - start), tMax, []);
+            },
+            local => Interlocked.Add(ref total, local));
+        return total;
+    }
+
+    /// <summary>Rays answered differently, compared chunk by chunk so that packets are cast as in the timed passes.</summary>
+    private static long CountDisagreements<TOurs, TTheirs>(TOurs ours, TTheirs theirs, Ray[] rays, double tMax, int threads)
+        where TOurs : struct, IRayCaster
+        where TTheirs : struct, IRayCaster
+    {
+        long differ = 0;
+        Parallel.For(0, (rays.Length + ChunkSize - 1) / ChunkSize, new ParallelOptions { MaxDegreeOfParallelism = threads }, chunk =>
+        {
+            int start = chunk * ChunkSize, n = Math.Min(rays.Length, start + ChunkSize) - start;
+            var a = new bool[n];
+            var b = new bool[n];
+            ours.Cast(rays.AsSpan(start, n), tMax, a);
+            theirs.Cast(rays.AsSpan(start, n), tMax, b);
+            int local = 0;
+            for (int i = 0; i < n; i++)
+                local += a[i] != b[i] ? 1 : 0;
+            Interlocked.Add(ref differ, local);
+        });
+        return differ;
+    }
+
+    /// <summary>
+    /// A ray from each primary hit towards a point light above and to the left of the studio camera's
+    /// direction, 6 bounding radii from the mesh's centre; direction light − origin, so the light is at t = 1.
+    /// </summary>
+    private static Ray[] ShadowRays(AccelerationStructure bvh, Mesh mesh, Ray[] primary, int threads, out Point3D light)
+    {
+        var (centre, radius) = MeshStudioScene.BoundingSphere(mesh);
+        var target = centre + 6 * radius * MeshStudioScene.Direction(MeshStudioScene.AzimuthDegrees - 50, 55);
+        light = target;
+        var shadow = new Ray?[primary.Length];
+        Parallel.For(0, primary.Length, new ParallelOptions { MaxDegreeOfParallelism = threads }, i =>
+        {
+            ref readonly var ray = ref primary[i];
+            if (!bvh.IntersectNearest(ray, double.PositiveInfinity, out double t, out int hit) || bvh.GetPrimitive(hit) is not ITriangle tri)
+                return;
+            var normal = Vector3D.Cross(tri.V1 - tri.V0, tri.V2 - tri.V0).Normalized();
+            if (Vector3D.Dot(normal, ray.d) > 0)
+                normal = -normal;
+            var origin = ray.At(t) + ShadowOffset * radius * normal;
+            shadow[i] = new Ray(origin, target - origin);
+        });
+        return [.. shadow.Where(r => r.HasValue).Select(r => r!.Value)];
+    }
+
+    /// <summary>One ray through each pixel centre from a pinhole camera on the +z axis with a 45° vertical field of view.</summary>
+    public static Ray[] PrimaryRays(int width, int height)
     {
         var eye = new Point3D(0, 0, 3.2);
         double halfHeight = Math.Tan(0.5 * MathConstants.ToRadians(45));
         double halfWidth = halfHeight * width / height;
-        long hits = 0;
-        Parallel.For(
-            0,
-            height,
-            new ParallelOptions { MaxDegreeOfParallelism = threads },
-            () => 0L,
-            (row, state, local) =>
+        var rays = new Ray[width * height];
+        for (int row = 0; row < height; row++)
+        {
+            double y = halfHeight * (1 - 2 * (row + 0.5) / height);
+            for (int col = 0; col < width; col++)
             {
-                double y = halfHeight * (1 - 2 * (row + 0.5) / height);
-                for (int col = 0; col < width; col++)
-                {
-                    double x = halfWidth * (2 * (col + 0.5) / width - 1);
-                    var ray = new Ray(eye, new Vector3D(x, y, -1));
-                    if (structure.IntersectNearest(ray, double.PositiveInfinity, out _, out _))
-                    {
-                        local++;
-                    }
-                }
+                double x = halfWidth * (2 * (col + 0.5) / width - 1);
+                rays[row * width + col] = new Ray(eye, new Vector3D(x, y, -1));
+            }
+        }
 
-                return local;
-            },
-            local => Interlocked.Add(ref hits, local));
-        return hits;
+        return rays;
+    }
+
+    /// <summary>Casts the rays of <see cref="PrimaryRays"/> at the structure; returns the hit count.</summary>
+    public static long CastPrimaryRays(IRayIntersector structure, int width, int height, int threads)
+    {
+        var rays = PrimaryRays(width, height);
+        return Count(new Nearest(structure), rays, rays.Length, double.PositiveInfinity, threads);
     }
 
     /// <summary>
@@ -162,4 +330,120 @@ public static class ThroughputReport
     // The bumps vanish towards the poles (factor sin θ), so the pole vertices are well defined.
     private static double Radius(double theta, double phi) =>
         1 + Math.Sin(theta) * (0.06 * Math.Sin(7 * theta) * Math.Cos(9 * phi) + 0.02 * Math.Sin(23 * theta + 3 * phi));
+
+    private readonly record struct Timing(double Wall, double Cpu, long Count);
+
+    /// <summary>
+    /// Queries for a run of rays, returning how many found a hit and, when <c>answers</c> is not empty, each
+    /// ray's answer; structs, so that the generic loops compile to direct calls.
+    /// </summary>
+    private interface IRayCaster
+    {
+        int Cast(ReadOnlySpan<Ray> rays, double tMax, Span<bool> answers);
+    }
+
+    private readonly struct Nearest(IRayIntersector structure) : IRayCaster
+    {
+        public int Cast(ReadOnlySpan<Ray> rays, double tMax, Span<bool> answers)
+        {
+            int count = 0;
+            for (int i = 0; i < rays.Length; i++)
+            {
+                bool hit = structure.IntersectNearest(rays[i], tMax, out _, out _);
+                count += hit ? 1 : 0;
+                if (!answers.IsEmpty)
+                    answers[i] = hit;
+            }
+
+            return count;
+        }
+    }
+
+    private readonly struct Any(IRayIntersector structure) : IRayCaster
+    {
+        public int Cast(ReadOnlySpan<Ray> rays, double tMax, Span<bool> answers)
+        {
+            int count = 0;
+            for (int i = 0; i < rays.Length; i++)
+            {
+                bool hit = structure.IntersectAny(rays[i], tMax);
+                count += hit ? 1 : 0;
+                if (!answers.IsEmpty)
+                    answers[i] = hit;
+            }
+
+            return count;
+        }
+    }
+
+    private readonly struct EmbreeNearest(EmbreeScene scene) : IRayCaster
+    {
+        public int Cast(ReadOnlySpan<Ray> rays, double tMax, Span<bool> answers)
+        {
+            int count = 0;
+            for (int i = 0; i < rays.Length; i++)
+            {
+                bool hit = scene.IntersectNearest(rays[i], tMax, out _, out _);
+                count += hit ? 1 : 0;
+                if (!answers.IsEmpty)
+                    answers[i] = hit;
+            }
+
+            return count;
+        }
+    }
+
+    private readonly struct EmbreeAny(EmbreeScene scene) : IRayCaster
+    {
+        public int Cast(ReadOnlySpan<Ray> rays, double tMax, Span<bool> answers)
+        {
+            int count = 0;
+            for (int i = 0; i < rays.Length; i++)
+            {
+                bool hit = scene.IntersectAny(rays[i], tMax);
+                count += hit ? 1 : 0;
+                if (!answers.IsEmpty)
+                    answers[i] = hit;
+            }
+
+            return count;
+        }
+    }
+
+    /// <summary>Packets of 8 consecutive rays (neighbouring pixels of a row).</summary>
+    private readonly struct EmbreeNearest8(EmbreeScene scene) : IRayCaster
+    {
+        public int Cast(ReadOnlySpan<Ray> rays, double tMax, Span<bool> answers)
+        {
+            int count = 0;
+            for (int i = 0; i < rays.Length; i += 8)
+            {
+                int n = Math.Min(8, rays.Length - i);
+                int mask = scene.IntersectNearest8(rays.Slice(i, n), tMax);
+                count += BitOperations.PopCount((uint)mask);
+                for (int k = 0; k < n && !answers.IsEmpty; k++)
+                    answers[i + k] = (mask & (1 << k)) != 0;
+            }
+
+            return count;
+        }
+    }
+
+    private readonly struct EmbreeAny8(EmbreeScene scene) : IRayCaster
+    {
+        public int Cast(ReadOnlySpan<Ray> rays, double tMax, Span<bool> answers)
+        {
+            int count = 0;
+            for (int i = 0; i < rays.Length; i += 8)
+            {
+                int n = Math.Min(8, rays.Length - i);
+                int mask = scene.IntersectAny8(rays.Slice(i, n), tMax);
+                count += BitOperations.PopCount((uint)mask);
+                for (int k = 0; k < n && !answers.IsEmpty; k++)
+                    answers[i + k] = (mask & (1 << k)) != 0;
+            }
+
+            return count;
+        }
+    }
 }

@@ -1,7 +1,6 @@
 using System.CommandLine;
 using System.CommandLine.Invocation;
 using System.Globalization;
-using RayTracer.Acceleration;
 using RayTracer.Factories;
 
 namespace RayTracer.Cli;
@@ -35,7 +34,7 @@ public static class Application
         {
             ListCommand(stdout),
             RenderCommand.Create(stdout, stderr, interactiveProgress),
-            BenchCommand(stdout),
+            BenchCommand.Create(stdout, stderr),
             Experiments.ExperimentsCommand.Create(stdout, stderr),
         };
 
@@ -88,27 +87,5 @@ public static class Application
             return Ok;
         });
         return list;
-    }
-
-    private static Command BenchCommand(TextWriter stdout)
-    {
-        var triangles = Options.Integer("--triangles", "Triangles of the procedural mesh", 8, 50_000_000);
-        var width = Options.Integer("--width", "Image width in pixels", 1, Options.MaxResolution);
-        var height = Options.Integer("--height", "Image height in pixels", 1, Options.MaxResolution);
-        var threads = Options.Integer("--threads", "Render threads (default: all cores)", 1, Options.MaxThreads, "-t");
-        var bench = new Command("bench", "Times building the grid, BIH and BVH over a procedural mesh, and their primary-ray throughput.")
-        {
-            triangles, width, height, threads,
-        };
-        bench.SetAction(parsed =>
-        {
-            ThroughputReport.Run(stdout,
-                parsed.GetValue(triangles) ?? 1_000_000,
-                parsed.GetValue(width) ?? 1024,
-                parsed.GetValue(height) ?? 768,
-                parsed.GetValue(threads) ?? Environment.ProcessorCount);
-            return Ok;
-        });
-        return bench;
     }
 }
