@@ -103,9 +103,9 @@ public static class ThroughputReport
         }
         else
         {
-            embreePrimary = Time(new EmbreeNearest(embree), rays, double.PositiveInfinity, threads);
+            embreePrimary = Time(new Nearest(embree), rays, double.PositiveInfinity, threads);
             output.WriteLine(Row("Embree rtcIntersect1", embreeBuild, embreePrimary, rays.Length, "hits"));
-            long differ = CountDisagreements(new Nearest(bvh!), new EmbreeNearest(embree), rays, double.PositiveInfinity, threads);
+            long differ = CountDisagreements(new Nearest(bvh!), new Nearest(embree), rays, double.PositiveInfinity, threads);
             output.WriteLine(Comparison(bvhPrimary, embreePrimary, "hits", differ, "rtcIntersect1"));
             var packets = Time(new EmbreeNearest8(embree), rays, double.PositiveInfinity, threads);
             output.WriteLine(Row("Embree rtcIntersect8", null, packets, rays.Length, "hits"));
@@ -119,9 +119,9 @@ public static class ThroughputReport
         output.WriteLine(Row("SAH BVH any hit", null, bvhShadow, shadowRays.Length, "occluded"));
         if (embree is not null)
         {
-            var embreeShadow = Time(new EmbreeAny(embree), shadowRays, 1.0, threads);
+            var embreeShadow = Time(new Any(embree), shadowRays, 1.0, threads);
             output.WriteLine(Row("Embree rtcOccluded1", null, embreeShadow, shadowRays.Length, "occluded"));
-            long differ = CountDisagreements(new Any(bvh!), new EmbreeAny(embree), shadowRays, 1.0, threads);
+            long differ = CountDisagreements(new Any(bvh!), new Any(embree), shadowRays, 1.0, threads);
             output.WriteLine(Comparison(bvhShadow, embreeShadow, "occluded", differ, "rtcOccluded1"));
             var packets = Time(new EmbreeAny8(embree), shadowRays, 1.0, threads);
             output.WriteLine(Row("Embree rtcOccluded8", null, packets, shadowRays.Length, "occluded"));
@@ -342,7 +342,7 @@ public static class ThroughputReport
         int Cast(ReadOnlySpan<Ray> rays, double tMax, Span<bool> answers);
     }
 
-    private readonly struct Nearest(IRayIntersector structure) : IRayCaster
+    private readonly struct Nearest(IRayQueries structure) : IRayCaster
     {
         public int Cast(ReadOnlySpan<Ray> rays, double tMax, Span<bool> answers)
         {
@@ -359,7 +359,7 @@ public static class ThroughputReport
         }
     }
 
-    private readonly struct Any(IRayIntersector structure) : IRayCaster
+    private readonly struct Any(IRayQueries structure) : IRayCaster
     {
         public int Cast(ReadOnlySpan<Ray> rays, double tMax, Span<bool> answers)
         {
@@ -367,40 +367,6 @@ public static class ThroughputReport
             for (int i = 0; i < rays.Length; i++)
             {
                 bool hit = structure.IntersectAny(rays[i], tMax);
-                count += hit ? 1 : 0;
-                if (!answers.IsEmpty)
-                    answers[i] = hit;
-            }
-
-            return count;
-        }
-    }
-
-    private readonly struct EmbreeNearest(EmbreeScene scene) : IRayCaster
-    {
-        public int Cast(ReadOnlySpan<Ray> rays, double tMax, Span<bool> answers)
-        {
-            int count = 0;
-            for (int i = 0; i < rays.Length; i++)
-            {
-                bool hit = scene.IntersectNearest(rays[i], tMax, out _, out _);
-                count += hit ? 1 : 0;
-                if (!answers.IsEmpty)
-                    answers[i] = hit;
-            }
-
-            return count;
-        }
-    }
-
-    private readonly struct EmbreeAny(EmbreeScene scene) : IRayCaster
-    {
-        public int Cast(ReadOnlySpan<Ray> rays, double tMax, Span<bool> answers)
-        {
-            int count = 0;
-            for (int i = 0; i < rays.Length; i++)
-            {
-                bool hit = scene.IntersectAny(rays[i], tMax);
                 count += hit ? 1 : 0;
                 if (!answers.IsEmpty)
                     answers[i] = hit;

@@ -9,7 +9,7 @@ namespace RayTracer.Acceleration.Embree;
 /// One Embree device and scene holding one triangle mesh, its vertices rounded to float as Embree stores
 /// them; queried one ray at a time like our structures, for side-by-side measurements.
 /// </summary>
-internal sealed unsafe class EmbreeScene : IDisposable
+internal sealed unsafe class EmbreeScene : IRayQueries, IDisposable
 {
     private nint _device;
     private nint _scene;
