@@ -159,6 +159,8 @@ internal static class BindingPointGenerator
             {
                 "float" or "single" or "system.single" or "f32" => "; did you mean 'float'?",
                 "double" or "system.double" or "f64" => "; did you mean 'double'?",
+                // C# names are case-sensitive: Vector256<Double> is not a type.
+                _ when CSharpEmitter.ScalarTypeNamed(name.Replace(" ", "", StringComparison.Ordinal)) is { } type => $"; did you mean '{type}'?",
                 _ => "",
             };
             diagnostics.Add(new(DiagnosticCodes.InvalidScalarType, SourceSpan.At(file.Path, lines[0].Line, lines[0].Column),

@@ -13,7 +13,7 @@ public static partial class CSharpEmitter
     /// </summary>
     public static string? ConstantOutOfRange(CodeBlock block, string scalarType)
     {
-        var single = scalarType == "float";
+        var single = IsSingle(scalarType);
         foreach (var statement in block.Statements)
         foreach (var expression in statement.Expressions)
         foreach (var node in new ExprWalk(expression))

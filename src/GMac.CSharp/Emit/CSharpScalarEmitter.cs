@@ -1,14 +1,12 @@
-using System.Text;
-using System.Text.RegularExpressions;
 using GMac.Core.CodeGeneration;
 
 namespace GMac.CSharp.Emit;
 
 /// <summary>
 /// Prints a code block as C# statements on plain scalars (<c>double</c> or <c>float</c>), one
-/// statement per assignment. Code over other kinds of scalar (vector types) is another emitter.
+/// statement per assignment. Code over vector types is <see cref="CSharpVectorEmitter"/>.
 /// </summary>
-public sealed partial class CSharpScalarEmitter : ICodeEmitter
+public sealed class CSharpScalarEmitter : CSharpBlockEmitter
 {
     public static CSharpScalarEmitter Instance { get; } = new();
 
@@ -17,188 +15,17 @@ public sealed partial class CSharpScalarEmitter : ICodeEmitter
     }
 
     /// <summary><c>double</c> (the default) and <c>float</c>: with <c>float</c>, functions are <c>MathF</c>'s and constants <c>f</c>-suffixed literals rounded once to float.</summary>
-    public IReadOnlyList<string> ScalarTypes { get; } = ["double", "float"];
+    public override IReadOnlyList<string> ScalarTypes { get; } = ["double", "float"];
 
-    /// <summary>Preferred prefixes of temporary names; numbered ones follow when all of these clash.</summary>
-    private static readonly string[] TemporaryPrefixes = ["tmp", "t", "tmpA", "tmpB", "tmpC", "gmacTmp"];
+    protected override ValueWriter CreateWriter(CSharpEmitOptions options, Func<string, string> variableText, Func<string, string> freshName) =>
+        new Writer(options.ScalarType == "float", variableText);
 
-    public string Emit(CodeBlock block, CSharpEmitOptions options)
+    private sealed class Writer(bool single, Func<string, string> variableText) : ValueWriter
     {
-        var single = options.ScalarType switch
-        {
-            "double" => false,
-            "float" => true,
-            _ => throw new InvalidOperationException($"No C# code for scalar type '{options.ScalarType}'; expected {string.Join(" or ", ScalarTypes)}."),
-        };
-        var temps = block.Temporaries.Select(t => t.Target).Distinct().ToList();
-        // The block's own C# text (bound inputs and output targets) names things the temporaries must not hide.
-        var bound = block.InputText.Values.Concat(block.OutputTargets.Values).Concat(block.EvaluatedOnce)
-            .SelectMany(text => IdentifierLike().Matches(text).Select(m => m.Value.TrimStart('@')))
-            .ToHashSet(StringComparer.Ordinal);
-        bool IsFree(string name) => !bound.Contains(name) && !options.IsNameTaken(name);
-        var held = HeldOutputs(block, options.MayOverwrite);
-        var once = block.EvaluatedOnce;
-        var prefix = CandidatePrefixes().First(p => Enumerable.Range(0, temps.Count + held.Count + once.Count).All(i => IsFree($"{p}{i}")));
-        var tempName = temps.Select((t, i) => (t, i)).ToDictionary(x => x.t, x => $"{prefix}{x.i}", StringComparer.Ordinal);
-        var onceNames = once.Select((_, k) => $"{prefix}{temps.Count + held.Count + k}").ToList();
-        var deferred = new List<(string Target, string Value)>();
+        public override string Print(Expr e) => single
+            ? ExprPrinter.Print(e, variableText, f => ScalarFunction(f, single: true), SingleLiteral.Of)
+            : ExprPrinter.Print(e, variableText, f => ScalarFunction(f, single: false));
 
-        string InputText(string input)
-        {
-            input = input.Trim();
-            for (var k = 0; k < once.Count; k++) input = input.Replace(CodeBlock.EvaluatedOnceMarker(k), onceNames[k], StringComparison.Ordinal);
-            return IsSimple(input) ? input : $"({input})";
-        }
-
-        string VariableText(string name) =>
-            tempName.TryGetValue(name, out var t) ? t
-            : block.InputText.TryGetValue(name, out var input) ? InputText(input)
-            : throw new InvalidOperationException($"'{name}' is neither an input nor a temporary of the block.");
-
-        string Print(Expr e) => single
-            ? ExprPrinter.Print(e, VariableText, f => SingleFunction(CSharpFunction(f)), SingleLiteral.Of)
-            : ExprPrinter.Print(e, VariableText, CSharpFunction);
-
-        // A value dropped into an output block's text stands among operators the emitter cannot see
-        // ("2 * <w.e1>" with w.e1 = a - b must read 2 * (a - b)): only a name or a literal that is not
-        // negative goes in bare (a variable's text is already parenthesized where it needs to be).
-        string Operand(Expr e) => e is VariableExpr or ConstantExpr { Value: >= 0 } ? Print(e) : $"({Print(e)})";
-
-        var sb = new StringBuilder();
-        if (options.IncludeStatistics)
-            sb.Append(options.Indent).Append("// GMac: ").Append(block.Statistics()).Append(options.NewLine);
-        // Expressions with effects (calls, increments) run once, in binding order, before anything is written.
-        for (var k = 0; k < once.Count; k++)
-            sb.Append(options.Indent).Append("var ").Append(onceNames[k]).Append(" = ").Append(once[k].Trim()).Append(';').Append(options.NewLine);
-        var declared = new HashSet<string>(StringComparer.Ordinal);
-        var sinCos = new SinCosPairs(block);
-        foreach (var s in block.Statements)
-        {
-            if (sinCos.IsDropped(s))
-                continue;
-            sb.Append(options.Indent);
-            switch (s)
-            {
-                case AssignmentStatement { IsOutput: true } o when held.Contains(o):
-                    var holder = $"{prefix}{temps.Count + deferred.Count}";
-                    sb.Append(options.ScalarType).Append(' ').Append(holder).Append(" = ").Append(Print(o.Value)).Append(';');
-                    deferred.Add((block.OutputTargets[o.Target].Trim(), holder));
-                    break;
-                case AssignmentStatement { IsOutput: true } o:
-                    var target = block.OutputTargets[o.Target].Trim();
-                    if (options.DeclareOutputs && declared.Add(target)) sb.Append(options.ScalarType).Append(' ');
-                    sb.Append(target).Append(" = ").Append(Print(o.Value)).Append(';');
-                    break;
-                case AssignmentStatement t when sinCos.TryGetPair(t, out var pair):
-                    var (sine, cosine) = (tempName[pair.Sine], tempName[pair.Cosine]);
-                    declared.Add(sine);
-                    declared.Add(cosine);
-                    sb.Append("var (").Append(sine).Append(", ").Append(cosine).Append(") = ")
-                        .Append(single ? "MathF" : "Math").Append(".SinCos(").Append(Print(pair.Argument)).Append(");");
-                    break;
-                case AssignmentStatement t:
-                    var name = tempName[t.Target];
-                    if (declared.Add(name)) sb.Append(options.ScalarType).Append(' ');
-                    sb.Append(name).Append(" = ").Append(Print(t.Value)).Append(';');
-                    break;
-                case VerbatimStatement v:
-                    // An output block's text has the line endings of its .gmac file: give it the file's own.
-                    foreach (var part in v.Parts) sb.Append(part.Text is { } text ? LineBreak().Replace(text, options.NewLine) : Operand(part.Value!));
-                    break;
-            }
-            sb.Append(options.NewLine);
-        }
-        foreach (var (target, holder) in deferred)
-        {
-            sb.Append(options.Indent);
-            if (options.DeclareOutputs && declared.Add(target)) sb.Append(options.ScalarType).Append(' ');
-            sb.Append(target).Append(" = ").Append(holder).Append(';').Append(options.NewLine);
-        }
-        return sb.ToString();
+        public override string SinCos(Expr argument) => (single ? "MathF" : "Math") + ".SinCos(" + Print(argument) + ")";
     }
-
-    /// <summary>
-    /// Outputs whose target may be the storage of an input read after them: written in place, they
-    /// would change that input under the statements still to read it (<c>a = a × b</c> bound to one
-    /// variable). Their values are held in temporaries and written after the last statement.
-    /// <paramref name="mayOverwrite"/> decides for an output and an input; without it, the names in
-    /// their texts do.
-    /// </summary>
-    private static HashSet<AssignmentStatement> HeldOutputs(CodeBlock block, Func<string, string, bool>? mayOverwrite)
-    {
-        var held = new HashSet<AssignmentStatement>(ReferenceEqualityComparer.Instance);
-        var readLater = new HashSet<string>(StringComparer.Ordinal);
-        for (var i = block.Statements.Count - 1; i >= 0; i--)
-        {
-            var s = block.Statements[i];
-            if (s is AssignmentStatement { IsOutput: true } o && readLater.Any(input => (mayOverwrite ?? SharesRootName(block))(o.Target, input)))
-                held.Add(o);
-            foreach (var e in s.Expressions)
-            foreach (var v in e.DescendantsAndSelf().OfType<VariableExpr>())
-                if (block.InputText.ContainsKey(v.Name))
-                    readLater.Add(v.Name);
-        }
-        return held;
-    }
-
-    /// <summary>
-    /// The fallback when no decision is given: whether the target's variable (its first name, after
-    /// <c>this.</c>) is one the input's text reads. A textual approximation; gmac decides on the parsed syntax.
-    /// </summary>
-    private static Func<string, string, bool> SharesRootName(CodeBlock block) => (output, input) =>
-    {
-        var target = RootNames(block.OutputTargets[output]).FirstOrDefault();
-        return target is null || RootNames(block.InputText[input]).Contains(target);
-    };
-
-    private static IEnumerable<string> RootNames(string text) =>
-        RootName().Matches(ThisAccess().Replace(text, "")).Select(m => m.Value.TrimStart('@')).Where(n => n is not ("this" or "base"));
-
-    /// <summary>A name that is not a member: not right after a dot or an arrow, and starting an identifier.</summary>
-    [GeneratedRegex(@"(?<!(\.|->)\s*)(?<![\p{L}\p{N}_@])@?[\p{L}_][\p{L}\p{N}_]*")]
-    private static partial Regex RootName();
-
-    [GeneratedRegex(@"\b(this|base)\s*\.\s*")]
-    private static partial Regex ThisAccess();
-
-    /// <summary>
-    /// The preferred prefixes, then <c>tmp_1_</c>, <c>tmp_2_</c>, …: each taken name rules out at most
-    /// one of those, so a free one always comes within as many tries as there are taken names.
-    /// </summary>
-    private static IEnumerable<string> CandidatePrefixes()
-    {
-        foreach (var prefix in TemporaryPrefixes) yield return prefix;
-        for (var k = 1; k < int.MaxValue; k++) yield return $"tmp_{k}_";
-        throw new InvalidOperationException("No free name for temporaries.");
-    }
-
-    private static string CSharpFunction(string f) => f switch
-    {
-        "sin" => "Math.Sin",
-        "cos" => "Math.Cos",
-        "tan" => "Math.Tan",
-        "acos" => "Math.Acos",
-        "sqrt" => "Math.Sqrt",
-        "exp" => "Math.Exp",
-        "log" => "Math.Log",
-        "atan2" => "Math.Atan2",
-        "abs" => "Math.Abs",
-        "pow" => "Math.Pow",
-        _ => throw new InvalidOperationException($"No C# function for '{f}'."),
-    };
-
-    /// <summary><c>Math.Sin</c> → <c>MathF.Sin</c>: the float overloads, so no value is widened to double.</summary>
-    private static string SingleFunction(string doubleFunction) => "MathF" + doubleFunction["Math".Length..];
-
-    /// <summary>An identifier, member access, element access or number: safe to use without parentheses.</summary>
-    private static bool IsSimple(string text) => SimpleExpression().IsMatch(text.Trim());
-
-    [GeneratedRegex(@"@?[A-Za-z_][A-Za-z0-9_]*")]
-    private static partial Regex IdentifierLike();
-
-    [GeneratedRegex(@"\r\n|\r|\n")]
-    private static partial Regex LineBreak();
-
-    [GeneratedRegex(@"^(@?[\p{L}_][\p{L}\p{N}_]*(\s*\.\s*@?[\p{L}_][\p{L}\p{N}_]*|\s*\[[^\[\]]*\])*|[0-9]+(\.[0-9]+)?([eE][+-]?[0-9]+)?[dD]?)$")]
-    private static partial Regex SimpleExpression();
 }

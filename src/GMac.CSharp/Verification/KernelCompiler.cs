@@ -56,7 +56,7 @@ internal static class KernelCompiler
     /// Compiles the blocks together (one compilation is much cheaper than many); returns a kernel or
     /// the compiler's first error for each block.
     /// </summary>
-    /// <param name="scalarTypes">The scalar type of each block (<c>double</c> or <c>float</c>); all double when null.</param>
+    /// <param name="scalarTypes">The scalar type of each block (<c>double</c>, <c>float</c>, <c>Vector256&lt;double&gt;</c>, …); all double when null.</param>
     public static IReadOnlyList<(CompiledKernel? Kernel, string? Error)> Compile(IReadOnlyList<KernelBlock> blocks,
         IReadOnlyList<string>? scalarTypes = null)
     {
@@ -79,9 +79,27 @@ internal static class KernelCompiler
         });
         foreach (var (output, input) in kernel.InPlace) body += $"        __out[{output}] = __in[{input}];\n";
         var sb = new StringBuilder();
-        sb.Append("public static class GMacVerify").Append(index).Append("\n{\n");
-        sb.Append("    public static void Run(").Append(scalarType).Append("[] __in, ").Append(scalarType).Append("[] __out)\n    {\n");
-        sb.Append(body);
+        if (VectorType.Find(scalarType) is { } vector)
+        {
+            // Each vector slot is loaded from, and stored to, its run of lanes in the arrays.
+            var (t, e) = (vector.Name, vector.Element);
+            sb.Append("using System.Numerics;\nusing System.Runtime.Intrinsics;\n");
+            sb.Append("public static class GMacVerify").Append(index).Append("\n{\n");
+            sb.Append("    public static void Run(").Append(e).Append("[] __inLanes, ").Append(e).Append("[] __outLanes)\n    {\n");
+            foreach (var side in new[] { "in", "out" })
+            {
+                sb.Append($"        var __{side} = new {t}[__{side}Lanes.Length / {t}.Count];\n");
+                sb.Append($"        for (var __k = 0; __k < __{side}.Length; __k++) __{side}[__k] = {vector.Family}.Create(new ReadOnlySpan<{e}>(__{side}Lanes, __k * {t}.Count, {t}.Count));\n");
+            }
+            sb.Append(body);
+            sb.Append($"        for (var __k = 0; __k < __out.Length; __k++) __out[__k].CopyTo(new Span<{e}>(__outLanes, __k * {t}.Count, {t}.Count));\n");
+        }
+        else
+        {
+            sb.Append("public static class GMacVerify").Append(index).Append("\n{\n");
+            sb.Append("    public static void Run(").Append(scalarType).Append("[] __in, ").Append(scalarType).Append("[] __out)\n    {\n");
+            sb.Append(body);
+        }
         sb.Append("    }\n}\n");
         return sb.ToString();
     }
@@ -109,7 +127,8 @@ internal static class KernelCompiler
     private static CompiledKernel Load(Assembly assembly, int index, List<string> inputs, List<string> outputs, string scalarType)
     {
         var method = assembly.GetType($"GMacVerify{index}")!.GetMethod("Run")!;
-        if (scalarType != "float") return new CompiledKernel(method.CreateDelegate<Action<double[], double[]>>(), inputs, outputs);
+        var lanes = VectorType.Find(scalarType)?.Lanes ?? 1;
+        if (!CSharpEmitter.IsSingle(scalarType)) return new CompiledKernel(method.CreateDelegate<Action<double[], double[]>>(), inputs, outputs) { Lanes = lanes };
         var run = method.CreateDelegate<Action<float[], float[]>>();
         // Inputs are rounded to float on the way in; outputs left unassigned stay NaN, as in a double kernel.
         return new CompiledKernel((input, output) =>
@@ -119,6 +138,6 @@ internal static class KernelCompiler
             Array.Fill(singleOutput, float.NaN);
             run(singleInput, singleOutput);
             for (var j = 0; j < output.Length; j++) output[j] = singleOutput[j];
-        }, inputs, outputs) { IsSingle = true };
+        }, inputs, outputs) { IsSingle = true, Lanes = lanes };
     }
 }

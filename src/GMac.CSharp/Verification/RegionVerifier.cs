@@ -29,17 +29,25 @@ internal static partial class RegionVerifier
     public static double ToleranceFor(bool differentiates, bool single) =>
         Math.Max(differentiates ? DifferentiationTolerance : Tolerance, single ? SingleTolerance : 0.0);
 
+    /// <summary>
+    /// A vector kernel (<see cref="CompiledKernel.Lanes"/> above one) gets a different sample in every
+    /// lane, and every lane is compared with the engine on its own sample.
+    /// </summary>
     public static VerificationResult Verify(CompiledKernel kernel, BindingPointPlan plan, IReadOnlyList<AssumptionSpec> assumptions,
         IReadOnlyList<IReadOnlyList<string>> normalizedGroups, double tolerance, int seed, int samples = 5)
     {
         var random = new Random(seed);
         var bounds = Bounds(plan, assumptions);
-        var input = new double[kernel.Inputs.Count];
-        var output = new double[kernel.Outputs.Count];
+        var lanes = kernel.Lanes;
+        // Whole vectors of samples: at least as many as asked for, every lane filled.
+        var wanted = (samples + lanes - 1) / lanes * lanes;
+        var input = new double[kernel.Inputs.Count * lanes];
+        var output = new double[kernel.Outputs.Count * lanes];
+        var batch = new List<(Dictionary<string, double> Values, IReadOnlyDictionary<string, double> Reference)>();
         var compared = 0;
         var maxError = 0.0;
         // Some inputs are singular (a zero norm, a degenerate sphere): try more points than needed.
-        for (var attempt = 0; attempt < samples * 4 && compared < samples; attempt++)
+        for (var attempt = 0; attempt < wanted * 4 && compared < wanted; attempt++)
         {
             var values = new Dictionary<string, double>(StringComparer.Ordinal);
             foreach (var name in plan.InputTexts.Keys)
@@ -56,20 +64,29 @@ internal static partial class RegionVerifier
             if (kernel.IsSingle) foreach (var name in values.Keys.ToList()) values[name] = (float)values[name];
             var reference = plan.NumericReference(values);
             if (reference.Values.Any(v => !double.IsFinite(v))) continue;
-            for (var i = 0; i < input.Length; i++) input[i] = values.TryGetValue(kernel.Inputs[i], out var v) ? v : 0.0;
+            batch.Add((values, reference));
+            if (batch.Count < lanes) continue;
+            for (var l = 0; l < lanes; l++)
+            for (var i = 0; i < kernel.Inputs.Count; i++)
+                input[i * lanes + l] = batch[l].Values.TryGetValue(kernel.Inputs[i], out var v) ? v : 0.0;
             Array.Fill(output, double.NaN);
             kernel.Run(input, output);
-            compared++;
-            for (var j = 0; j < output.Length; j++)
+            for (var l = 0; l < lanes; l++)
             {
-                var expected = reference.TryGetValue(kernel.Outputs[j], out var r) ? r : 0.0;
-                var error = Math.Abs(output[j] - expected) / Math.Max(1.0, Math.Max(Math.Abs(expected), Math.Abs(output[j])));
-                if (double.IsNaN(error)) error = double.PositiveInfinity;
-                maxError = Math.Max(maxError, error);
-                if (error > tolerance)
-                    return new VerificationResult(compared, maxError, tolerance, string.Create(CultureInfo.InvariantCulture,
-                        $"output '{kernel.Outputs[j]}' is {output[j]:R} but the numeric engine gives {expected:R} (sample {compared}, inputs {string.Join(", ", values.Select(x => $"{plan.InputTexts[x.Key]}={x.Value:G6}"))})"));
+                compared++;
+                for (var j = 0; j < kernel.Outputs.Count; j++)
+                {
+                    var actual = output[j * lanes + l];
+                    var expected = batch[l].Reference.TryGetValue(kernel.Outputs[j], out var r) ? r : 0.0;
+                    var error = Math.Abs(actual - expected) / Math.Max(1.0, Math.Max(Math.Abs(expected), Math.Abs(actual)));
+                    if (double.IsNaN(error)) error = double.PositiveInfinity;
+                    maxError = Math.Max(maxError, error);
+                    if (error > tolerance)
+                        return new VerificationResult(compared, maxError, tolerance, string.Create(CultureInfo.InvariantCulture,
+                            $"output '{kernel.Outputs[j]}' is {actual:R} but the numeric engine gives {expected:R} (sample {compared}{(lanes > 1 ? $", lane {l}" : "")}, inputs {string.Join(", ", batch[l].Values.Select(x => $"{plan.InputTexts[x.Key]}={x.Value:G6}"))})"));
+                }
             }
+            batch.Clear();
         }
         return compared == 0
             ? new VerificationResult(0, 0, tolerance, "no sample gave finite reference values")

@@ -5,7 +5,7 @@ using GMac.CSharp.BindingPoints;
 namespace GMac.Cli.Commands;
 
 /// <summary>
-/// <c>gmac generate [PATH…] [--sources-from FILE] --dsl DIR|FILE… [--dsl-from FILE] [--standard-library] [--check] [--stats] [--cache DIR] [--scalar float|double]</c>:
+/// <c>gmac generate [PATH…] [--sources-from FILE] --dsl DIR|FILE… [--dsl-from FILE] [--standard-library] [--check] [--stats] [--cache DIR] [--scalar TYPE]</c>:
 /// rewrites every binding point under the paths and in the listed files; with <c>--check</c> only
 /// reports files that are out of date.
 /// </summary>

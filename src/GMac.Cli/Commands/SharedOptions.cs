@@ -15,7 +15,7 @@ internal static class SharedOptions
 
     /// <summary>
     /// The scalar type of generated code; a binding point's <c>//GMac.Type</c> line overrides it.
-    /// The name is taken in any case (<c>Float</c>), as MSBuild compares property values.
+    /// The name is taken in any case (<c>Float</c>, <c>vector256&lt;double&gt;</c>), as MSBuild compares property values.
     /// </summary>
     public static Option<string> Scalar(string what)
     {
@@ -30,8 +30,7 @@ internal static class SharedOptions
                 // no value at all is already an arity error of the parser
                 if (result.Tokens.Count == 0) return null;
                 var value = result.Tokens[^1].Value;
-                var name = value.ToLowerInvariant();
-                if (types.Contains(name)) return name;
+                if (GMac.CSharp.Emit.CSharpEmitter.ScalarTypeNamed(value) is { } name) return name;
                 result.AddError($"--scalar is '{value}'; it must be {string.Join(" or ", types)}.");
                 return null;
             },

@@ -9,7 +9,7 @@ using GMac.Dsl.Generation;
 namespace GMac.Cli.Commands;
 
 /// <summary>
-/// <c>gmac show MACRO --dsl DIR|FILE… [--bind …] [--min EXPR=V] [--max EXPR=V] [--stats] [--scalar float|double]</c>:
+/// <c>gmac show MACRO --dsl DIR|FILE… [--bind …] [--min EXPR=V] [--max EXPR=V] [--stats] [--scalar TYPE]</c>:
 /// prints the code generated for one macro, with default bindings (<c>u_e1</c>, <c>w_e1</c>, …) unless
 /// given; when only inputs are bound, the outputs get the default names.
 /// </summary>

@@ -4,7 +4,7 @@ using GMac.CSharp.BindingPoints;
 namespace GMac.Cli.Commands;
 
 /// <summary>
-/// <c>gmac verify [PATH…] --dsl DIR|FILE… [--seed N] [--cache DIR] [--scalar float|double]</c>: compiles the code of every binding
+/// <c>gmac verify [PATH…] --dsl DIR|FILE… [--seed N] [--cache DIR] [--scalar TYPE]</c>: compiles the code of every binding
 /// point inside its file and project, and compares it with the numeric engine on random inputs.
 /// </summary>
 internal static class VerifyCommand

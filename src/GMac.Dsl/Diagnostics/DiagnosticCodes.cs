@@ -67,7 +67,7 @@ public static class DiagnosticCodes
     public static readonly DiagnosticDescriptor EmptyAssumption = new("GMAC0312", Error, "assumed minimum and maximum of one expression leave no value", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor GeneratedDivisionByZero = new("GMAC0313", Error, "the macro divides by an expression that is zero for these bindings", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor TooLarge = new("GMAC0314", Error, "an operation of the macro is too large to evaluate symbolically", ReportedBy.Generation);
-    public static readonly DiagnosticDescriptor ConstantOutOfRange = new("GMAC0315", Error, "a constant of the generated code is outside the range of its scalar type (float or double)", ReportedBy.Generation);
+    public static readonly DiagnosticDescriptor ConstantOutOfRange = new("GMAC0315", Error, "a constant of the generated code is outside the range of its scalar type (float or double, also as the lanes of a vector type)", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor UnboundInput = new("GMAC0317", Error, "an input is bound by no line, or a coefficient is left out of a grade whose others are bound (write \"0\" to mean zero)", ReportedBy.Generation);
 
     // ---- binding points, C# files, verification
@@ -83,7 +83,7 @@ public static class DiagnosticCodes
     public static readonly DiagnosticDescriptor OutOfDate = new("GMAC0410", Error, "with --check: a binding point differs from what gmac generates", ReportedBy.Generate);
     public static readonly DiagnosticDescriptor SkippedSourceFile = new("GMAC0411", Warning, "a special file (device, pipe, socket) or a named file that is not a .cs file is skipped", ReportedBy.Generate | ReportedBy.Build);
     public static readonly DiagnosticDescriptor NotAnExpression = new("GMAC0412", Error, "the C# text of a binding is not exactly one C# expression", ReportedBy.Generation);
-    public static readonly DiagnosticDescriptor InvalidScalarType = new("GMAC0413", Error, "a GMac.Type line names a scalar type other than float or double, or is given twice", ReportedBy.SourceFiles);
+    public static readonly DiagnosticDescriptor InvalidScalarType = new("GMAC0413", Error, "a GMac.Type line names a scalar type gmac does not write (float, double, Vector128/256/512 or Vector of float or double), or is given twice", ReportedBy.SourceFiles);
     public static readonly DiagnosticDescriptor TargetHasEffects = new("GMAC0419", Error, "the C# target of an output calls, assigns or increments, so it would run at every write", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor DisagreesWithEngine = new("GMAC0420", Error, "the generated code disagrees with the numeric engine", ReportedBy.Verify);
     public static readonly DiagnosticDescriptor KernelDoesNotCompile = new("GMAC0421", Error, "the generated code does not compile on its own", ReportedBy.Verify);

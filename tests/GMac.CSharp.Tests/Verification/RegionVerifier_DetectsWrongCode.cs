@@ -39,6 +39,32 @@ public sealed class RegionVerifier_DetectsWrongCode
         Assert.Contains($"output '{kernel.Outputs[1]}'", bad.Failure);
     }
 
+    /// <summary>A vector kernel is checked lane by lane: one wrong lane fails, and the failure names it.</summary>
+    [Fact]
+    public void A_vector_kernel_with_one_wrong_lane_fails()
+    {
+        var outcome = NormalOutcome();
+        var remapped = KernelCompiler.Remap(outcome.Result!.Block, outcome.Plan!.InputTexts.Keys);
+        var kernel = KernelCompiler.Compile([remapped], ["Vector256<double>"])[0].Kernel!;
+        Assert.Equal(4, kernel.Lanes);
+        var good = RegionVerifier.Verify(kernel, outcome.Plan, [], [], RegionVerifier.Tolerance, seed: 3);
+        Assert.True(good.Passed, good.Failure);
+        Assert.Equal(8, good.Samples);
+
+        var wrong = kernel with
+        {
+            Run = (input, output) =>
+            {
+                kernel.Run(input, output);
+                output[1 * kernel.Lanes + 2] *= 1 + 1e-6;
+            },
+        };
+        var bad = RegionVerifier.Verify(wrong, outcome.Plan, [], [], RegionVerifier.Tolerance, seed: 3);
+        Assert.False(bad.Passed);
+        Assert.Contains($"output '{kernel.Outputs[1]}'", bad.Failure);
+        Assert.Contains("lane 2", bad.Failure);
+    }
+
     /// <summary>
     /// The kernel writes an in-place output over its input's slot, as the file's code does: code that
     /// writes it before the input's last read (as if the two names did not alias) fails.

@@ -107,6 +107,7 @@ public sealed partial class Generate_ScalarType : IDisposable
     [InlineData("single", "did you mean 'float'?")]
     [InlineData("Double", "did you mean 'double'?")]
     [InlineData("decimal", "not 'decimal'")]
+    [InlineData("Vector256<Double>", "did you mean 'Vector256<double>'?")]
     public void An_unknown_type_name_is_an_error_at_its_line_and_the_file_is_left_alone(string name, string message)
     {
         var text = Source($"//GMac.Type(\"{name}\");");
@@ -134,6 +135,24 @@ public sealed partial class Generate_ScalarType : IDisposable
         var (exit, _, err) = Tool.Generate([path]);
         Assert.Equal(1, exit);
         Assert.Contains($"{path}(11,9): error GMAC0404: GMac.Type takes one string", err);
+    }
+
+    [Fact]
+    public void Show_and_generate_take_vector_types_in_any_case()
+    {
+        var (exit, output, err) = Tool.Run("show", "SphereCentreAndRadius", "--dsl", Dsl, "--scalar", "vector256<DOUBLE>");
+        Assert.True(exit == 0, err);
+        Assert.Contains("Vector256<double> tmpC0 = Vector256.Create(1.0);", output);
+        Assert.Contains("Vector256<double> tmp0 = tmpC0 / omega_no;", output);
+        Assert.Contains("radius_s = Vector256.Sqrt(", output);
+
+        var path = _temp.Write("Spheres.cs", Source("", "//GMac.Type(\"Vector<float>\");"));
+        (exit, _, err) = Tool.Run("generate", path, "--dsl", Dsl, "--cache", Path.Combine(_temp.Path, "cache"), "--scalar", "Vector512<Float>");
+        Assert.True(exit == 0, err);
+        var bodies = Bodies(File.ReadAllText(path));
+        Assert.Contains("Vector512<float> centre_e1 = ", bodies[0]);
+        Assert.Contains("Vector<float> centre_e1 = ", bodies[1]);
+        Assert.Contains("Vector.SquareRoot(", bodies[1]);
     }
 
     [Fact]

@@ -64,6 +64,37 @@ public sealed class MsBuildStep_ScalarProperty
     }
 
     [Fact]
+    public void Gmac_scalar_may_be_a_vector_type_and_the_project_builds_with_it()
+    {
+        const string vectorKernels = """
+            using System.Runtime.Intrinsics;
+
+            namespace Sample;
+
+            public static class Kernels
+            {
+                public static Vector256<double> Third(Vector256<double> ax, Vector256<double> ay, Vector256<double> az)
+                {
+                    #region GMac : Third
+                    //GMac.Bind("u.e1", "<ax>");
+                    //GMac.Bind("u.e2", "<ay>");
+                    //GMac.Bind("u.e3", "<az>");
+                    #endregion
+
+                    return w_e1 + w_e2 + w_e3;
+                }
+            }
+
+            """;
+        using var project = new SampleProject(vectorKernels, "<GMacScalar>vector256&lt;Double&gt;</GMacScalar>");
+        var (exit, output) = project.Build(restore: true);
+        Assert.True(exit == 0, output);
+        var code = File.ReadAllText(project.KernelsFile);
+        Assert.Contains("Vector256<double> w_e1 = ", code);
+        Assert.Contains("Vector256.Create(0.333333", code);
+    }
+
+    [Fact]
     public void Another_gmac_scalar_is_a_build_error_naming_the_property()
     {
         using var project = new SampleProject(Kernels, "<GMacScalar>half</GMacScalar>");
