@@ -138,7 +138,7 @@ internal sealed class Workspace(IReadOnlyList<string> folders, Func<PublishDiagn
         return sources;
     }
 
-    /// <summary>The diagnostics of every file, and an empty list for each file that had some and has none now.</summary>
+    /// <summary>The diagnostics of every file, and an empty list for each open document or file that had some and has none now.</summary>
     private async Task PublishAsync(Analysis analysis, CancellationToken cancellation)
     {
         var byFile = analysis.Diagnostics.GroupBy(d => d.Span.FilePath, StringComparer.Ordinal).ToDictionary(g => g.Key, g => g.ToList(), StringComparer.Ordinal);
@@ -146,7 +146,8 @@ internal sealed class Workspace(IReadOnlyList<string> folders, Func<PublishDiagn
         lock (_lock)
         {
             cancellation.ThrowIfCancellationRequested();
-            files = [.. _published.Union(byFile.Keys)];
+            // Open documents always get a list, so an editor never keeps problems of an older text.
+            files = [.. _published.Union(byFile.Keys).Union(_open.Keys)];
             _published.Clear();
             _published.UnionWith(byFile.Keys);
         }
