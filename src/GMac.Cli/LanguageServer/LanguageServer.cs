@@ -103,8 +103,8 @@ internal sealed class LanguageServer(TextWriter log)
     [JsonRpcMethod("textDocument/didClose", UseSingleObjectParameterDeserialization = true)]
     public void DidClose(DidCloseTextDocumentParams parameters) => Guard("didClose", () => Workspace.Close(Uris.ToPath(parameters.TextDocument.Uri)));
 
-    [JsonRpcMethod("workspace/didChangeWatchedFiles")]
-    public void DidChangeWatchedFiles() => Guard("didChangeWatchedFiles", () => Workspace.FilesChanged());
+    [JsonRpcMethod("workspace/didChangeWatchedFiles", UseSingleObjectParameterDeserialization = true)]
+    public void DidChangeWatchedFiles(JsonElement parameters) => Guard("didChangeWatchedFiles", () => Workspace.FilesChanged());
 
     [JsonRpcMethod("textDocument/hover", UseSingleObjectParameterDeserialization = true)]
     public async Task<Hover?> HoverAsync(TextDocumentPositionParams parameters, CancellationToken cancellation)
@@ -119,12 +119,13 @@ internal sealed class LanguageServer(TextWriter log)
                 return new Hover(new MarkupContent("markdown", product), range);
             return analysis.Resolve(text, t) switch
             {
-                MacroSymbol macro => new Hover(new MarkupContent("markdown", MacroHover(analysis, macro, cancellation)), range),
+                MacroSymbol macro when Workspace.IsCurrent(analysis) => new Hover(new MarkupContent("markdown", MacroHover(analysis, macro, cancellation)), range),
+                MacroSymbol => throw ContentModified(),
                 { } symbol => new Hover(new MarkupContent("markdown", $"```gmac\n{DefinitionText(analysis, symbol)}\n```"), range),
                 null => null,
             };
         }
-        catch (Exception e) when (e is not OperationCanceledException and not OutOfMemoryException)
+        catch (Exception e) when (e is not OperationCanceledException and not LocalRpcException and not OutOfMemoryException)
         {
             await log.WriteLineAsync($"gmac lsp: hover failed: {e}");
             return null;
@@ -256,6 +257,8 @@ internal sealed class LanguageServer(TextWriter log)
             var lenses = new List<CodeLens>();
             foreach (var macro in analysis.Model.Macros.Values.Where(m => m.Declaration.FilePath == path))
             {
+                // Counts for a text already replaced are of no use: the client asks again.
+                if (!Workspace.IsCurrent(analysis)) throw ContentModified();
                 if (analysis.NameLocation(macro, p => p) is not { } name) continue;
                 var code = await Task.Run(() => analysis.Generated(macro, cancellation), cancellation);
                 var title = code?.Statistics is { } s ? Counts(s)
@@ -264,12 +267,15 @@ internal sealed class LanguageServer(TextWriter log)
             }
             return [.. lenses];
         }
-        catch (Exception e) when (e is not OperationCanceledException and not OutOfMemoryException)
+        catch (Exception e) when (e is not OperationCanceledException and not LocalRpcException and not OutOfMemoryException)
         {
             await log.WriteLineAsync($"gmac lsp: codeLens failed: {e}");
             return [];
         }
     }
+
+    /// <summary>LSP's ContentModified: the document changed while the answer was being made.</summary>
+    private static LocalRpcException ContentModified() => new("the document changed") { ErrorCode = -32801 };
 
     private Workspace Workspace => _workspace ?? throw new InvalidOperationException("the server is not initialized");
 

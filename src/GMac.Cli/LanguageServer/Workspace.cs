@@ -72,6 +72,12 @@ internal sealed class Workspace(IReadOnlyList<string> folders, Func<PublishDiagn
         }, CancellationToken.None);
     }
 
+    /// <summary>Whether no change came after <paramref name="analysis"/>'s texts.</summary>
+    public bool IsCurrent(Analysis analysis)
+    {
+        lock (_lock) return analysis.Version == _version;
+    }
+
     /// <summary>The analysis of the current texts, made now if the last one is older.</summary>
     public async Task<Analysis> CurrentAsync(CancellationToken cancellation)
     {

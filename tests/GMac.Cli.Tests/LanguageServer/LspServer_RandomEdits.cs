@@ -39,7 +39,7 @@ public sealed class LspServer_RandomEdits
             client.Change(workspace.MacrosPath, version, text);
             // Requests in between, each on whatever the text is then (a request analyses it at once).
             if (version % 10 == 0)
-                client.At(Requests[random.Next(Requests.Length)], workspace.MacrosPath, random.Next(14), random.Next(40));
+                Ask(client, Requests[random.Next(Requests.Length)], workspace.MacrosPath, random.Next(14), random.Next(40));
         }
         Assert.False(client.HasExited, client.Log);
         // Every text was analysed without an internal failure (a failure is logged, and would be a defect).
@@ -50,5 +50,17 @@ public sealed class LspServer_RandomEdits
         Assert.Contains("3 additions/subtractions, 6 multiplications", hover, StringComparison.Ordinal);
         Assert.Empty(client.DiagnosticsOf(LspClient.Uri(workspace.MacrosPath)));
         Assert.Equal(0, client.Shutdown());
+    }
+
+    /// <summary>A request whose answer may be ContentModified (-32801), never another error.</summary>
+    private static void Ask(LspClient client, string method, string path, int line, int character)
+    {
+        try
+        {
+            client.At(method, path, line, character);
+        }
+        catch (InvalidOperationException e) when (e.Message.Contains("-32801", StringComparison.Ordinal))
+        {
+        }
     }
 }
