@@ -15,6 +15,7 @@ internal sealed class Workspace(IReadOnlyList<string> folders, Func<PublishDiagn
     private readonly Dictionary<string, string> _open = new(StringComparer.Ordinal);
     private readonly Lock _lock = new();
     private readonly SemaphoreSlim _analysing = new(1, 1);
+    private readonly SemaphoreSlim _publishing = new(1, 1);
     private readonly HashSet<string> _published = new(StringComparer.Ordinal);
     private int _version;
     private Analysis? _current;
@@ -148,19 +149,28 @@ internal sealed class Workspace(IReadOnlyList<string> folders, Func<PublishDiagn
     private async Task PublishAsync(Analysis analysis, CancellationToken cancellation)
     {
         var byFile = analysis.Diagnostics.GroupBy(d => d.Span.FilePath, StringComparer.Ordinal).ToDictionary(g => g.Key, g => g.ToList(), StringComparer.Ordinal);
-        List<string> files;
-        lock (_lock)
+        // One analysis publishes at a time and stops at a newer change, so an older list never follows a newer one.
+        await _publishing.WaitAsync(cancellation);
+        try
         {
-            cancellation.ThrowIfCancellationRequested();
+            List<string> files;
             // Open documents always get a list, so an editor never keeps problems of an older text.
-            files = [.. _published.Union(byFile.Keys).Union(_open.Keys)];
-            _published.Clear();
-            _published.UnionWith(byFile.Keys);
+            lock (_lock) files = [.. _published.Union(byFile.Keys).Union(_open.Keys)];
+            foreach (var file in files)
+            {
+                cancellation.ThrowIfCancellationRequested();
+                var diagnostics = byFile.TryGetValue(file, out var list) ? list.Select(d => ToLsp(analysis, d)).ToList() : [];
+                await publish(new PublishDiagnosticsParams(Uris.FromPath(file), diagnostics));
+                lock (_lock)
+                {
+                    if (diagnostics.Count > 0) _published.Add(file);
+                    else _published.Remove(file);
+                }
+            }
         }
-        foreach (var file in files)
+        finally
         {
-            var diagnostics = byFile.TryGetValue(file, out var list) ? list.Select(d => ToLsp(analysis, d)).ToList() : [];
-            await publish(new PublishDiagnosticsParams(Uris.FromPath(file), diagnostics));
+            _publishing.Release();
         }
     }
 

@@ -120,9 +120,12 @@ internal sealed class LspClient : IDisposable
         return _process.ExitCode;
     }
 
-    private void Send(JsonObject message)
+    private void Send(JsonObject message) => SendRaw(message.ToJsonString());
+
+    /// <summary>A body as given, well-formed or not, in a correct frame.</summary>
+    public void SendRaw(string text)
     {
-        var body = Encoding.UTF8.GetBytes(message.ToJsonString());
+        var body = Encoding.UTF8.GetBytes(text);
         lock (_writing)
         {
             _input.Write(Encoding.ASCII.GetBytes($"Content-Length: {body.Length}\r\n\r\n"));
