@@ -60,16 +60,16 @@ internal sealed class LspClient : IDisposable
         Send(new JsonObject { ["jsonrpc"] = "2.0", ["method"] = method, ["params"] = parameters });
 
     /// <summary>The next notification for which <paramref name="match"/> holds (earlier ones are dropped).</summary>
-    public JsonObject WaitFor(string method, Func<JsonObject, bool>? match = null)
+    public JsonObject WaitFor(string method, Func<JsonObject, bool>? match = null, TimeSpan? wait = null)
     {
-        var deadline = DateTime.UtcNow + Wait;
+        var deadline = DateTime.UtcNow + (wait ?? Wait);
         while (DateTime.UtcNow < deadline)
         {
             if (_notifications.TryTake(out var message, TimeSpan.FromMilliseconds(100))
                 && (string?)message["method"] == method && (match?.Invoke((JsonObject)message["params"]!) ?? true))
                 return (JsonObject)message["params"]!;
         }
-        throw new TimeoutException($"no {method} within {Wait}; server log:\n{Log}");
+        throw new TimeoutException($"no {method} within {wait ?? Wait}; server log:\n{Log}");
     }
 
     /// <summary>The diagnostics published next for <paramref name="uri"/>.</summary>

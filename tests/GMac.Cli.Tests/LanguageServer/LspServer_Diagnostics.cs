@@ -54,6 +54,20 @@ public sealed class LspServer_Diagnostics
     }
 
     [Fact]
+    public void After_quick_changes_the_newest_text_has_the_last_word()
+    {
+        using var workspace = new LspWorkspace();
+        var client = workspace.Client;
+        var uri = LspClient.Uri(workspace.MacrosPath);
+        client.Open(workspace.MacrosPath, LspWorkspace.Macros.Replace("u op v", "u op q", StringComparison.Ordinal));
+        client.Change(workspace.MacrosPath, 2, LspWorkspace.Macros.Replace("u op v", "u op z", StringComparison.Ordinal));
+        client.Change(workspace.MacrosPath, 3, LspWorkspace.Macros);
+        client.WaitFor("textDocument/publishDiagnostics", p => (string?)p["uri"] == uri && p["diagnostics"]!.AsArray().Count == 0);
+        // No list of an older text comes after it.
+        Assert.Throws<TimeoutException>(() => client.WaitFor("textDocument/publishDiagnostics", p => (string?)p["uri"] == uri, TimeSpan.FromSeconds(1)));
+    }
+
+    [Fact]
     public void An_unknown_method_answers_method_not_found()
     {
         using var workspace = new LspWorkspace();
