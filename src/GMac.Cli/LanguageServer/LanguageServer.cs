@@ -48,8 +48,9 @@ internal sealed class LanguageServer(TextWriter log)
         var folders = new List<string>();
         if (options.ValueKind == JsonValueKind.Object && options.TryGetProperty("dslFolders", out var dsl) && dsl.ValueKind == JsonValueKind.Array)
             folders.AddRange(dsl.EnumerateArray().Where(f => f.ValueKind == JsonValueKind.String).Select(f => Path.GetFullPath(f.GetString()!)));
-        // No folders named: the workspace's (every .gmac file under them).
-        if (folders.Count == 0)
+        // No folders named: the workspace's (every .gmac file under them but build output and hidden folders).
+        var wholeWorkspace = folders.Count == 0;
+        if (wholeWorkspace)
         {
             folders.AddRange((parameters.WorkspaceFolders ?? []).Select(f => Uris.ToPath(f.Uri)));
             if (folders.Count == 0 && parameters.RootUri is { } root) folders.Add(Uris.ToPath(root));
@@ -57,7 +58,7 @@ internal sealed class LanguageServer(TextWriter log)
         }
         if (options.ValueKind == JsonValueKind.Object && options.TryGetProperty("standardLibrary", out var library) && library.ValueKind == JsonValueKind.True)
             folders.Add(DslOptions.StandardLibraryDirectory);
-        _workspace = new Workspace(folders, p => _rpc!.NotifyWithParameterObjectAsync("textDocument/publishDiagnostics", p), log);
+        _workspace = new Workspace(folders, wholeWorkspace, p => _rpc!.NotifyWithParameterObjectAsync("textDocument/publishDiagnostics", p), log);
         log.WriteLine($"gmac lsp: DSL folders: {string.Join(", ", folders)}");
         return new
         {

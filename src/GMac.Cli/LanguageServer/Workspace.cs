@@ -8,8 +8,11 @@ namespace GMac.Cli.LanguageServer;
 /// short pause (the newest change wins: an older one still waiting or running is cancelled and its
 /// result dropped); a request that needs the current text analyses it at once.
 /// </summary>
-internal sealed class Workspace(IReadOnlyList<string> folders, Func<PublishDiagnosticsParams, Task> publish, TextWriter log)
+internal sealed class Workspace(IReadOnlyList<string> folders, bool wholeWorkspace, Func<PublishDiagnosticsParams, Task> publish, TextWriter log)
 {
+    // Copies of .gmac files a build or a tool makes (gmac.dll's own library under bin/) would define everything twice.
+    private static readonly string[] NotSources = ["bin", "obj", "node_modules"];
+
     public static readonly TimeSpan Debounce = TimeSpan.FromMilliseconds(150);
 
     private readonly Dictionary<string, string> _open = new(StringComparer.Ordinal);
@@ -125,6 +128,7 @@ internal sealed class Workspace(IReadOnlyList<string> folders, Func<PublishDiagn
             }
             foreach (var file in files.Select(Path.GetFullPath))
             {
+                if (wholeWorkspace && IsOutput(folder, file)) continue;
                 if (!seen.Add(file)) continue;
                 if (_open.TryGetValue(file, out var text)) sources.Add((file, text));
                 else
@@ -144,6 +148,11 @@ internal sealed class Workspace(IReadOnlyList<string> folders, Func<PublishDiagn
             if (seen.Add(path)) sources.Add((path, text));
         return sources;
     }
+
+    /// <summary>Whether a file found under a workspace folder lies in build output or a hidden folder.</summary>
+    private static bool IsOutput(string folder, string file) =>
+        Path.GetRelativePath(folder, file).Split(Path.DirectorySeparatorChar).SkipLast(1)
+            .Any(d => d.StartsWith('.') || NotSources.Contains(d, StringComparer.OrdinalIgnoreCase));
 
     /// <summary>The diagnostics of every file, and an empty list for each open document or file that had some and has none now.</summary>
     private async Task PublishAsync(Analysis analysis, CancellationToken cancellation)

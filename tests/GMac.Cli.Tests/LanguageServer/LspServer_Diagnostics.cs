@@ -68,6 +68,24 @@ public sealed class LspServer_Diagnostics
     }
 
     [Fact]
+    public void The_workspace_leaves_out_build_output_and_hidden_folders()
+    {
+        using var workspace = new LspWorkspace(initialize: false);
+        // Copies that would define everything twice.
+        foreach (var folder in new[] { "bin/Debug/dsl", "obj", "node_modules/x", ".git" })
+            File.Copy(workspace.FramesPath, Path.Combine(Directory.CreateDirectory(Path.Combine(workspace.Folder, folder)).FullName, "frames.gmac"));
+        workspace.Client.Initialize(workspace.Folder);
+        workspace.Client.Open(workspace.MacrosPath, LspWorkspace.Macros);
+        Assert.Empty(workspace.Client.DiagnosticsOf(LspClient.Uri(workspace.MacrosPath)));
+        var references = workspace.Client.At("textDocument/references", workspace.FramesPath, 6, 30,
+            new JsonObject { ["context"] = new JsonObject { ["includeDeclaration"] = true } })!.AsArray();
+        Assert.Equal(
+            [LspClient.Uri(workspace.FramesPath), LspClient.Uri(workspace.MacrosPath)],
+            references.Select(r => (string)r!["uri"]!).Distinct().Order(StringComparer.Ordinal));
+        Assert.Equal(0, workspace.Client.Shutdown());
+    }
+
+    [Fact]
     public void An_unknown_method_answers_method_not_found()
     {
         using var workspace = new LspWorkspace();
