@@ -16,6 +16,7 @@ internal static class CommandLine
             CheckCommand.Create(),
             ShowCommand.Create(),
             VerifyCommand.Create(),
+            LspCommand.Create(),
         };
 
     public static int Run(IReadOnlyList<string> args, TextWriter output, TextWriter error)
