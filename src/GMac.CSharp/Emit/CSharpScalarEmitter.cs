@@ -184,6 +184,8 @@ public sealed partial class CSharpScalarEmitter : ICodeEmitter
         "atan2" => "Math.Atan2",
         "abs" => "Math.Abs",
         "pow" => "Math.Pow",
+        "sinh" => "Math.Sinh",
+        "cosh" => "Math.Cosh",
         _ => throw new InvalidOperationException($"No C# function for '{f}'."),
     };
 
