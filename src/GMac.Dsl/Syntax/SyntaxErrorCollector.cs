@@ -54,7 +54,7 @@ internal sealed class SyntaxErrorCollector(string filePath, DiagnosticBag diagno
         if (Previous(token.TokenIndex) is not { Type: GMacDslLexer.ID } word || word.Line != token.Line) return null;
         if (Previous(word.TokenIndex) is not { } operand || operand.Line != word.Line) return null;
         var endsOperand = operand.Type is GMacDslLexer.ID or GMacDslLexer.INT or GMacDslLexer.FLOAT || operand.Text is ")" or "]" or ">";
-        var startsOperand = token.Type is GMacDslLexer.ID or GMacDslLexer.INT or GMacDslLexer.FLOAT || token.Text is "(" or "-" or "<";
+        var startsOperand = token.Type is GMacDslLexer.ID or GMacDslLexer.INT or GMacDslLexer.FLOAT || token.Text is "(" or "-";
         return endsOperand && startsOperand ? word : null;
     }
 
