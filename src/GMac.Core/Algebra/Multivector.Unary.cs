@@ -110,12 +110,21 @@ public sealed partial class Multivector<T>
 
     /// <summary>
     /// The inverse of a versor or blade, Ṽ / [[V]] (3.61). A null versor (quasi-norm zero) has none.
+    /// For other multivectors Ṽ/⟨VṼ⟩₀ is no inverse; a symbolic multivector whose coefficients are
+    /// all constants is known at generation, so there that is an error (1 + e1: (1 + e1)(1 + e1)~ = 2 + 2e1).
     /// </summary>
     public Multivector<T> Inverse()
     {
         if (IsZero)
             throw new AlgebraException(Frame.Name, "the zero multivector has no inverse.");
         var reverse = Reverse();
+        if (typeof(T) == typeof(Symbolic.Scalar) && Terms.All(t => ((Symbolic.Scalar)(object)t.Coefficient!).IsConstant))
+        {
+            var product = Gp(reverse);
+            if (product.SelectGrades(g => g != 0).TermCount > 0)
+                throw new AlgebraException(Frame.Name,
+                    $"{this} is not a versor or blade: its product with its reverse is {product}, not a scalar, so Ã/⟨AÃ⟩₀ is not its inverse.");
+        }
         var q = QuasiNorm();
         if (T.IsZero(q))
             throw new AlgebraException(Frame.Name, $"cannot invert the null versor or blade {this}: its quasi-norm ⟨V Ṽ⟩₀ is zero.");
