@@ -26,6 +26,8 @@ public static class HighPrecision
         "tan" => Cos(args[0]) is { IsZero: false } c ? Round(Sin(args[0]) / c) : null,
         "exp" => Exp(args[0]),
         "log" => Log(args[0]),
+        "sinh" => Sinh(args[0]),
+        "cosh" => Round((Exp(args[0]) + Exp(-args[0])) / 2),
         "abs" => args[0].Abs(),
         "atan2" => Atan2(args[0], args[1]),
         "acos" => Acos(args[0]),
@@ -78,6 +80,10 @@ public static class HighPrecision
         for (var i = 0; i < halvings; i++) y = Round(y * y);
         return y;
     }
+
+    /// <summary>The odd series below 1 in magnitude (no cancellation of e^x − e^−x), else the exponentials.</summary>
+    public static Rational Sinh(Rational x) =>
+        x.Abs() < Rational.One ? Series(x, (term, n) => term * x * x / ((2 * n) * (2 * n + 1))) : Round((Exp(x) - Exp(-x)) / 2);
 
     public static Rational? Log(Rational x)
     {

@@ -151,6 +151,8 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
             "atan2" => "Math.Atan2",
             "abs" => "Math.Abs",
             "pow" => "Math.Pow",
+            "sinh" => "Math.Sinh",
+            "cosh" => "Math.Cosh",
             _ => throw new InvalidOperationException($"No C# function for '{f}'."),
         };
         return single ? "MathF" + function["Math".Length..] : function;

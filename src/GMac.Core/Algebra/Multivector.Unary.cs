@@ -110,12 +110,21 @@ public sealed partial class Multivector<T>
 
     /// <summary>
     /// The inverse of a versor or blade, Ṽ / [[V]] (3.61). A null versor (quasi-norm zero) has none.
+    /// For other multivectors Ṽ/⟨VṼ⟩₀ is no inverse; a symbolic multivector whose coefficients are
+    /// all constants is known at generation, so there that is an error (1 + e1: (1 + e1)(1 + e1)~ = 2 + 2e1).
     /// </summary>
     public Multivector<T> Inverse()
     {
         if (IsZero)
             throw new AlgebraException(Frame.Name, "the zero multivector has no inverse.");
         var reverse = Reverse();
+        if (typeof(T) == typeof(Symbolic.Scalar) && Terms.All(t => ((Symbolic.Scalar)(object)t.Coefficient!).IsConstant))
+        {
+            var product = Gp(reverse);
+            if (product.SelectGrades(g => g != 0).TermCount > 0)
+                throw new AlgebraException(Frame.Name,
+                    $"{this} is not a versor or blade: its product with its reverse is {product}, not a scalar, so Ã/⟨AÃ⟩₀ is not its inverse.");
+        }
         var q = QuasiNorm();
         if (T.IsZero(q))
             throw new AlgebraException(Frame.Name, $"cannot invert the null versor or blade {this}: its quasi-norm ⟨V Ṽ⟩₀ is zero.");
@@ -168,45 +177,140 @@ public sealed partial class Multivector<T>
 
     /// <summary>
     /// exp(B) for a multivector whose square is a scalar β (a 2-blade, or any bivector in 3D):
-    /// cos√(−β) + B sin√(−β)/√(−β) when β &lt; 0, cosh/sinh when β &gt; 0, 1 + B when β = 0.
-    /// The sign of a symbolic β comes from the metric: a 2-blade spanned by vectors of a
-    /// definite sub-metric always squares to a negative number.
+    /// cos θ + B sin θ/θ with θ = √(−β) when β &lt; 0, cosh/sinh when β &gt; 0, 1 + B when β = 0.
     /// </summary>
-    public Multivector<T> Exp()
+    public Multivector<T> Exp() => Exp(isBlade: false);
+
+    /// <summary>
+    /// exp(B); with <paramref name="isBlade"/> the caller knows B is a blade (an outer product of
+    /// vectors), so B² = ⟨BB⟩₀ even where the coefficients hide it (Plücker relations between
+    /// temporaries), and only the scalar part of the square is used.
+    /// <para>
+    /// The sign of a symbolic β comes from its structure (a sum of squares, a square), else from the
+    /// metric (a 2-blade in a definite or positive semi-definite subspace squares to ≤ 0), else the
+    /// code chooses at run time. Every form is finite at β = 0 and where β underflows.
+    /// </para>
+    /// </summary>
+    public Multivector<T> Exp(bool isBlade)
     {
         if (IsZero) return FromScalar(Frame, T.One);
         var square = Gp(this);
         var beta = square.ScalarPart;
-        if (!square.Grade(0).Equals(square) && square.SelectGrades(g => g != 0).TermCount > 0)
+        if (!isBlade && !square.Grade(0).Equals(square) && square.SelectGrades(g => g != 0).TermCount > 0)
             throw new AlgebraException(Frame.Name, $"exp is defined here for multivectors whose square is a scalar (2-blades), but {this} squares to {square}.");
         if (T.IsZero(beta)) return Add(T.One);
-        var sign = T.IsNegative(beta) ? -1 : T.IsPositive(beta) ? 1 : SignFromMetric();
+        var sign = SignOf(beta) ?? SignFromMetric();
+        if (sign is null) return ExpOfUnknownSign(beta);
         if (sign < 0)
         {
             var theta = T.Sqrt(-beta);
-            return FromScalar(Frame, T.Cos(theta)) + Scale(T.Sin(theta) / theta);
+            // θ underflowed (|B| below ~1e-154): sin θ/θ and cos θ are 1 to the last bit.
+            if (T.IsZero(theta)) return Add(T.One);
+            var angle = Angle(-beta, theta).Value;
+            return FromScalar(Frame, T.Cos(angle)) + Scale(T.Sin(angle) / angle);
         }
         var phi = T.Sqrt(beta);
-        return FromScalar(Frame, T.Cosh(phi)) + Scale(T.Sinh(phi) / phi);
+        if (T.IsZero(phi)) return Add(T.One);
+        var rapidity = Angle(beta, phi);
+        // Without a division by the rapidity, exponentials (they combine across versor products);
+        // with one, calls accurate near 0.
+        var (cosh, sinh) = rapidity.Divides ? Hyperbolic(rapidity.Value) : (T.Cosh(rapidity.Value), T.Sinh(rapidity.Value));
+        return FromScalar(Frame, cosh) + Scale(sinh / rapidity.Value);
     }
 
-    private int SignFromMetric()
+    /// <summary>
+    /// The angle (or rapidity) √r for the generated code, chosen so that sin θ/θ (sinh θ/θ) is never
+    /// 0/0. Numbers are left alone (the caller branches at 0). A symbolic θ = √(u²) = |u| is replaced
+    /// by u (cos and sin θ/θ are even) when B/u has no division: then B·sin(cu)/(cu) simplifies to a
+    /// product with no division at all, as in x·sin|x|/|x| = sin x. Otherwise the radicand gets
+    /// 1e-40: at r = 0 (or where r underflows) the code computes sin(1e-20)/1e-20 = 1 and cos = 1;
+    /// above r ≈ 1e-24 the sum rounds to r, so the code is bit-for-bit the textbook formula; in
+    /// between the change is far below the last bit of results that are 1 to double precision.
+    /// (1e-40 is a subnormal float, so the guard also holds in float code.)
+    /// </summary>
+    private (T Value, bool Divides) Angle(T radicand, T root)
+    {
+        if (root is not Symbolic.Scalar r) return (root, false);
+        if (((Symbolic.Scalar)(object)radicand).TrySquareRoot(out var u) && DivisionFree(u)) return ((T)(object)u, false);
+        if (DivisionFree(r)) return (root, false);
+        return (T.Sqrt(radicand + RadicandGuard), true);
+    }
+
+    /// <summary>cosh and sinh as calls for symbolic scalars (see <see cref="Symbolic.Scalar.HyperbolicSine"/>).</summary>
+    private static (T Cosh, T Sinh) Hyperbolic(T x) => x is Symbolic.Scalar s
+        ? ((T)(object)Symbolic.Scalar.HyperbolicCosine(s), (T)(object)Symbolic.Scalar.HyperbolicSine(s))
+        : (T.Cosh(x), T.Sinh(x));
+
+    private bool DivisionFree(Symbolic.Scalar angle) =>
+        Terms.All(t => !((Symbolic.Scalar)(object)t.Coefficient! / angle).HasDivision());
+
+    // A double, not 10⁻⁴⁰: an exact power of ten is a square the simplifier would take out of the root.
+    private static readonly T RadicandGuard = T.CreateChecked(1e-40);
+
+    /// <summary>
+    /// exp(B) when the sign of β = B² is known only at run time, without a branch:
+    /// C = cosh √β₊ + cos √β₋ − 1 and S = sinh g₊/g₊ + sin g₋/g₋ − 1 with β± = (|β| ± β)/2, so one
+    /// of β₊, β₋ is zero and its function contributes exactly 1; g± = √(β± + 1e-40) keep 0/0 out (see Angle).
+    /// </summary>
+    private Multivector<T> ExpOfUnknownSign(T beta)
+    {
+        var two = T.One + T.One;
+        var magnitude = T.Abs(beta);
+        // |…| because rounding can leave (|β| − β)/2 a hair below zero.
+        var (plus, minus) = (T.Abs((magnitude + beta) / two), T.Abs((magnitude - beta) / two));
+        var positive = T.Sqrt(plus);
+        var negative = T.Sqrt(minus);
+        var gp = T.Sqrt(plus + RadicandGuard);
+        var gn = T.Sqrt(minus + RadicandGuard);
+        var c = Hyperbolic(positive).Cosh + T.Cos(negative) - T.One;
+        var s = Hyperbolic(gp).Sinh / gp + T.Sin(gn) / gn - T.One;
+        return FromScalar(Frame, c) + Scale(s);
+    }
+
+    /// <summary>−1, 0 or +1 when the sign of <paramref name="value"/> is known for all values of its variables.</summary>
+    private static int? SignOf(T value)
+    {
+        if (T.IsZero(value)) return 0;
+        if (value is Symbolic.Scalar s) return s.KnownSign();
+        return T.IsNegative(value) ? -1 : 1;
+    }
+
+    /// <summary>
+    /// −1 when the blades of this multivector span a subspace whose metric is definite or positive
+    /// semi-definite (a 2-blade there squares to ≤ 0: rotations, and PGA translators at 0), else null.
+    /// </summary>
+    private int? SignFromMetric()
     {
         var support = 0;
         foreach (var id in Ids()) support |= id;
         var indices = new BasisBlade(support).BasisVectorIndices().ToArray();
         var sub = new Numerics.Rational[indices.Length, indices.Length];
-        for (var i = 0; i < indices.Length; i++)
-        for (var j = 0; j < indices.Length; j++)
-            sub[i, j] = Frame.Metric[indices[i], indices[j]];
-        var metric = Metric.FromMatrix(sub);
         var negated = new Numerics.Rational[indices.Length, indices.Length];
         for (var i = 0; i < indices.Length; i++)
         for (var j = 0; j < indices.Length; j++)
+        {
+            sub[i, j] = Frame.Metric[indices[i], indices[j]];
             negated[i, j] = -sub[i, j];
-        if (metric.IsPositiveDefinite || Metric.FromMatrix(negated).IsPositiveDefinite) return -1;
-        throw new AlgebraException(Frame.Name,
-            $"cannot tell the sign of the square of {this} (its blades span an indefinite subspace); exp needs it to choose between trigonometric and hyperbolic forms.");
+        }
+        if (Metric.FromMatrix(sub).IsPositiveDefinite || Metric.FromMatrix(negated).IsPositiveDefinite || IsPositiveSemiDefinite(sub)) return -1;
+        return null;
+    }
+
+    /// <summary>Every principal minor ≥ 0 (small subspaces only: a blade's support).</summary>
+    private static bool IsPositiveSemiDefinite(Numerics.Rational[,] m)
+    {
+        var n = m.GetLength(0);
+        if (n > 12) return false;
+        for (var subset = 1; subset < 1 << n; subset++)
+        {
+            var idx = Enumerable.Range(0, n).Where(i => (subset & (1 << i)) != 0).ToArray();
+            var minor = new Numerics.Rational[idx.Length, idx.Length];
+            for (var i = 0; i < idx.Length; i++)
+            for (var j = 0; j < idx.Length; j++)
+                minor[i, j] = m[idx[i], idx[j]];
+            if (new Numerics.RationalMatrix(minor).Determinant().Sign < 0) return false;
+        }
+        return true;
     }
 
     public bool Equals(Multivector<T>? other)

@@ -5,7 +5,7 @@ public static class MathFunctions
 {
     public static readonly IReadOnlySet<string> Names = new HashSet<string>(StringComparer.Ordinal)
     {
-        "sin", "cos", "tan", "acos", "sqrt", "exp", "log", "atan2", "abs", "pow",
+        "sin", "cos", "tan", "acos", "sqrt", "exp", "log", "atan2", "abs", "pow", "sinh", "cosh",
     };
 
     public static bool TryEvaluate(string function, double[] args, out double value)
@@ -20,6 +20,8 @@ public static class MathFunctions
             "exp" when args.Length == 1 => Math.Exp(args[0]),
             "log" when args.Length == 1 => Math.Log(args[0]),
             "abs" when args.Length == 1 => Math.Abs(args[0]),
+            "sinh" when args.Length == 1 => Math.Sinh(args[0]),
+            "cosh" when args.Length == 1 => Math.Cosh(args[0]),
             "atan2" when args.Length == 2 => Math.Atan2(args[0], args[1]),
             "pow" when args.Length == 2 => Math.Pow(args[0], args[1]),
             _ => double.NaN,

@@ -157,6 +157,8 @@ public static class ScalarLowering
         AtomKind.Abs => ExprFactory.Call("abs", Lower(atom.Arguments[0])),
         AtomKind.Atan2 => ExprFactory.Call("atan2", Lower(atom.Arguments[0]), Lower(atom.Arguments[1])),
         AtomKind.Pow => ExprFactory.Call("pow", Lower(atom.Arguments[0]), Lower(atom.Arguments[1])),
+        AtomKind.Sinh => ExprFactory.Call("sinh", Lower(atom.Arguments[0])),
+        AtomKind.Cosh => ExprFactory.Call("cosh", Lower(atom.Arguments[0])),
         _ => throw new InvalidOperationException($"No lowering for atom kind {atom.Kind}."),
     };
 }

@@ -107,6 +107,7 @@ public sealed class Assumptions
             AtomKind.Abs => BoundsOf(a[0], memo).Abs(),
             AtomKind.Pow => BoundsOf(a[0], memo).IsPositive ? Interval.NonNegative : Interval.Everything,
             AtomKind.Inverse => BoundsOf(a[0], memo).Reciprocal(),
+            AtomKind.Cosh => new Interval(1, double.PositiveInfinity),
             _ => Interval.Everything,
         };
         memo[atom] = result;

@@ -20,4 +20,7 @@ public enum AtomKind
     Pow,
     /// <summary>1/s for a sum s of two or more terms, normalized so its leading coefficient is 1.</summary>
     Inverse,
+    // sinh and cosh as calls (Scalar.HyperbolicSine), where code needs sinh x accurate near 0 and e^x − e^−x cancels.
+    Sinh,
+    Cosh,
 }

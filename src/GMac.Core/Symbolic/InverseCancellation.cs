@@ -57,6 +57,8 @@ public static class InverseCancellation
         AtomKind.Atan2 => Scalar.Atan2(a[0], a[1]),
         AtomKind.Pow => Scalar.Pow(a[0], a[1]),
         AtomKind.Inverse => Scalar.Reciprocal(a[0]),
+        AtomKind.Sinh => Scalar.HyperbolicSine(a[0]),
+        AtomKind.Cosh => Scalar.HyperbolicCosine(a[0]),
         _ => throw new InvalidOperationException($"Atom kind {kind} has no arguments to rebuild."),
     };
 

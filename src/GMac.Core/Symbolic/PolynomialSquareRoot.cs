@@ -51,7 +51,7 @@ internal static class PolynomialSquareRoot
         return candidate * candidate == p ? candidate : null;
     }
 
-    private static Term? HalfOf(Term term)
+    internal static Term? HalfOf(Term term)
     {
         if (term.Coefficient.Sign <= 0 || !term.Coefficient.TryExactSqrt(out var c)) return null;
         var factors = term.Monomial.FactorArray;

@@ -67,6 +67,8 @@ public sealed partial class Scalar
             AtomKind.Abs => Math.Abs(Evaluate(a[0], valueOf, memo)),
             AtomKind.Pow => RealPower(Evaluate(a[0], valueOf, memo), a[1], Evaluate(a[1], valueOf, memo)),
             AtomKind.Inverse => 1.0 / Evaluate(a[0], valueOf, memo),
+            AtomKind.Sinh => Math.Sinh(Evaluate(a[0], valueOf, memo)),
+            AtomKind.Cosh => Math.Cosh(Evaluate(a[0], valueOf, memo)),
             _ => throw new InvalidOperationException($"Unknown atom kind {atom.Kind}."),
         };
         memo[atom] = value;
@@ -247,6 +249,8 @@ public sealed partial class Scalar
                     AtomKind.Log => Reciprocal(a[0]),
                     AtomKind.Abs => a[0] * Reciprocal(self),
                     AtomKind.Inverse => -(self * self),
+                    AtomKind.Sinh => HyperbolicCosine(a[0]),
+                    AtomKind.Cosh => HyperbolicSine(a[0]),
                     _ => throw new InvalidOperationException($"Unknown atom kind {atom.Kind}."),
                 });
                 break;

@@ -188,8 +188,29 @@ public sealed partial class Scalar
     public static Scalar DegreesToRadians(Scalar degrees) => Scale(Pi, new Rational(1, 180)) * degrees;
     public static Scalar RadiansToDegrees(Scalar radians) => Scale(radians, 180) / Pi;
 
+    // As exponentials, so products of versors combine (e^{θ/2}·e^{θ/2} = e^θ in a dilator).
     public static Scalar Sinh(Scalar x) => Scale(Exp(x) - Exp(-x), new Rational(1, 2));
     public static Scalar Cosh(Scalar x) => Scale(Exp(x) + Exp(-x), new Rational(1, 2));
+
+    /// <summary>
+    /// sinh as one function call (Math.Sinh in code): accurate near 0, where e^x − e^−x cancels,
+    /// for code that divides by the argument (sinh φ/φ in exp of a blade).
+    /// </summary>
+    public static Scalar HyperbolicSine(Scalar x)
+    {
+        if (x.IsStructuralZero) return Zero;
+        // sinh is odd: sinh(c·|u|)·… keeps its sign outside, as sin does.
+        return LeadingCoefficientIsNegative(x) ? -Function(AtomKind.Sinh, -x) : Function(AtomKind.Sinh, x);
+    }
+
+    /// <summary>cosh as one function call, the partner of <see cref="HyperbolicSine"/>.</summary>
+    public static Scalar HyperbolicCosine(Scalar x)
+    {
+        if (x.IsStructuralZero) return One;
+        // cosh is even: cosh(c·|u|) = cosh(c·u).
+        if (TryGetScaledAtom(x, AtomKind.Abs, out var c, out var abs)) return HyperbolicCosine(Scale(abs.ArgumentArray[0], c));
+        return Function(AtomKind.Cosh, LeadingCoefficientIsNegative(x) ? -x : x);
+    }
     public static Scalar Tanh(Scalar x) => (Exp(x) - Exp(-x)) / (Exp(x) + Exp(-x));
     public static Scalar Asinh(Scalar x) => Log(x + Sqrt(x * x + One));
     public static Scalar Acosh(Scalar x) => Log(x + Sqrt(x * x - One));
@@ -224,6 +245,8 @@ public sealed partial class Scalar
         AtomKind.Pow => "pow",
         AtomKind.Inverse => "inv",
         AtomKind.Pi => "pi",
+        AtomKind.Sinh => "sinh",
+        AtomKind.Cosh => "cosh",
         _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "Variables have no function name."),
     };
 
@@ -241,6 +264,8 @@ public sealed partial class Scalar
         AtomKind.Pow => Pow(arguments[0], arguments[1]),
         AtomKind.Inverse => Reciprocal(arguments[0]),
         AtomKind.Pi => Pi,
+        AtomKind.Sinh => HyperbolicSine(arguments[0]),
+        AtomKind.Cosh => HyperbolicCosine(arguments[0]),
         _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "Variables are not functions."),
     };
 

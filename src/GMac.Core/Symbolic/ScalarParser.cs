@@ -248,9 +248,9 @@ internal sealed class ScalarParser
 
         var arity = name switch
         {
-            "sin" or "cos" or "tan" or "sqrt" or "exp" or "log" or "abs" => 1,
+            "sin" or "cos" or "tan" or "sqrt" or "exp" or "log" or "abs" or "sinh" or "cosh" => 1,
             "atan2" or "pow" => 2,
-            _ => throw Error($"unknown function '{name}' (known: sin, cos, tan, sqrt, exp, log, atan2, abs, pow)", start),
+            _ => throw Error($"unknown function '{name}' (known: sin, cos, tan, sqrt, exp, log, atan2, abs, pow, sinh, cosh)", start),
         };
         _position++;
         var arguments = new List<Scalar> { ParseSum() };
@@ -280,6 +280,9 @@ internal sealed class ScalarParser
             "exp" => Scalar.Exp(arguments[0]),
             "log" => Scalar.Log(arguments[0]),
             "abs" => Scalar.Abs(arguments[0]),
+            // Printed text says sinh only for the atom (Scalar.Sinh prints as exponentials).
+            "sinh" => Scalar.HyperbolicSine(arguments[0]),
+            "cosh" => Scalar.HyperbolicCosine(arguments[0]),
             "atan2" => Scalar.Atan2(arguments[0], arguments[1]),
             _ => Scalar.Pow(arguments[0], arguments[1]),
         };

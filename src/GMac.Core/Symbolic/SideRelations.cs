@@ -6,7 +6,7 @@ namespace GMac.Core.Symbolic;
 /// <summary>
 /// Reduces scalars modulo polynomial relations known to hold: the Pythagorean identity
 /// sin(u)^2 + cos(u)^2 = 1 for every sin atom (applied as sin(u)^2 → 1 - cos(u)^2, so that
-/// sin^2 + cos^2 gives 1 and 1 - sin^2 gives cos^2), plus user relations such as the unit norm of
+/// sin^2 + cos^2 gives 1 and 1 - sin^2 gives cos^2) and its twin cosh(u)^2 - sinh(u)^2 = 1, plus user relations such as the unit norm of
 /// a rotor, each solved for one chosen monomial. Reduction also applies inside function arguments.
 /// Immutable; <see cref="With(Scalar, Scalar, Scalar)"/> returns an extended set.
 /// </summary>
@@ -153,9 +153,15 @@ public sealed class SideRelations
         if (!UsesPythagoreanIdentity) return null;
         foreach (var factor in term.Monomial.FactorArray)
         {
-            if (factor.Atom.Kind != AtomKind.Sin || factor.Power < 2) continue;
-            // sin(u)^2 → 1 - cos(u)^2
+            if (factor.Atom.Kind is not (AtomKind.Sin or AtomKind.Sinh) || factor.Power < 2) continue;
             var quotient = Monomial.TryDivide(term.Monomial, Monomial.FromAtom(factor.Atom, 2))!;
+            if (factor.Atom.Kind == AtomKind.Sinh)
+            {
+                // sinh(u)^2 → cosh(u)^2 - 1, the hyperbolic twin (the atoms are new, so cache keys need not change)
+                var cosh = Scalar.HyperbolicCosine(factor.Atom.ArgumentArray[0]);
+                return Scalar.FromTerm(term.Coefficient, quotient) * (cosh * cosh - Scalar.One);
+            }
+            // sin(u)^2 → 1 - cos(u)^2
             var cos = Scalar.Cos(factor.Atom.ArgumentArray[0]);
             return Scalar.FromTerm(term.Coefficient, quotient) * (Scalar.One - cos * cos);
         }

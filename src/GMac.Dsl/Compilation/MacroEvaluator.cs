@@ -262,7 +262,7 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
             UnaryOperator.Inverse => a.Inverse(),
             UnaryOperator.Dual => a.Dual(),
             UnaryOperator.Undual => a.Undual(),
-            UnaryOperator.Exp => a.Exp(),
+            UnaryOperator.Exp => a.Exp(IsBladeByStructure(u.Operand, context.Macro, 0)),
             UnaryOperator.Norm => Scalar(a.Norm()),
             UnaryOperator.Norm2 => Scalar(a.Norm2()),
             // Quasi-norm: ⟨A Ã⟩₀ may be negative in a non-Euclidean metric, so no absolute value.
@@ -271,6 +271,25 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
             _ => throw new MacroEvaluationException(u.Span, $"unknown operator {u.Operator}"),
         });
     }
+
+    /// <summary>
+    /// Whether an expression is a blade however its coefficients are named: an outer product of
+    /// vectors, scaled or negated, or a variable assigned once from such an expression.
+    /// </summary>
+    private static bool IsBladeByStructure(BoundExpression e, MacroSymbol macro, int depth) => depth < 16 && e switch
+    {
+        BoundBinaryOperation { Operator: BinaryOperator.Op } b => OuterProductChain(b) is not null,
+        BoundBinaryOperation { Operator: BinaryOperator.Multiply } b when b.Left.Type.IsScalar || b.Left.Type.GradeMask == 1 =>
+            IsBladeByStructure(b.Right, macro, depth + 1),
+        BoundBinaryOperation { Operator: BinaryOperator.Multiply } b when b.Right.Type.IsScalar || b.Right.Type.GradeMask == 1 =>
+            IsBladeByStructure(b.Left, macro, depth + 1),
+        BoundBinaryOperation { Operator: BinaryOperator.Divide } b => IsBladeByStructure(b.Left, macro, depth + 1),
+        BoundUnaryOperation { Operator: UnaryOperator.Negate } u => IsBladeByStructure(u.Operand, macro, depth + 1),
+        BoundVariableReference { Variable.Kind: not VariableKind.Input } v =>
+            macro.Statements.OfType<BoundAssignment>().Where(a => a.Target == v.Variable).ToList() is [var only]
+            && IsBladeByStructure(only.Value, macro, depth + 1),
+        _ => false,
+    };
 
     /// <summary>A division, blamed on its own DSL position when the divisor is (symbolically) zero.</summary>
     private static TResult Divide<TResult>(Func<TResult> divide, BoundBinaryOperation b)

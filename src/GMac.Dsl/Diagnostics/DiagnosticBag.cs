@@ -82,4 +82,5 @@ public sealed class DiagnosticBag
     public void ReportOutputNeverAssigned(SourceSpan span, string macro, string name) =>
         Report(DiagnosticCodes.OutputNeverAssigned, span, $"output '{name}' of macro '{macro}' is never assigned");
     public void ReportSkippedFile(SourceSpan span, string reason) => Report(DiagnosticCodes.SkippedDslFile, span, reason);
+    public void ReportSignatureOrder(SourceSpan span, string message) => Report(DiagnosticCodes.SignatureOrder, span, message);
 }

@@ -51,6 +51,7 @@ public static class DiagnosticCodes
     public static readonly DiagnosticDescriptor Unused = new("GMAC0201", Warning, "a subspace, constant, transform or temporary is never used", ReportedBy.Check);
     public static readonly DiagnosticDescriptor OutputNeverAssigned = new("GMAC0202", Warning, "a macro never assigns one of its outputs", ReportedBy.Check);
     public static readonly DiagnosticDescriptor SkippedDslFile = new("GMAC0203", Warning, "a special file in the DSL folder (device, pipe, socket) is skipped", ReportedBy.Check);
+    public static readonly DiagnosticDescriptor SignatureOrder = new("GMAC0204", Warning, "signature (p, q, r) makes a basis vector named like the usual null or negative one positive, and another null or negative", ReportedBy.Check);
 
     // ---- generating a binding point
     public static readonly DiagnosticDescriptor UnknownMacro = new("GMAC0301", Error, "a binding point names a macro the DSL does not define", ReportedBy.Generation);

@@ -80,6 +80,10 @@ internal sealed partial class Binder
                 frame.Kind = FrameKind.Signature;
                 if (BindSignature(s, frame) is { } metric) frame.InnerProductMatrix = metric;
                 break;
+            case NamedSignatureFrameContext s:
+                frame.Kind = FrameKind.Signature;
+                if (BindNamedSignature(s, frame) is { } named) frame.InnerProductMatrix = named;
+                break;
             case IpmFrameContext ipm:
                 frame.Kind = FrameKind.InnerProductMatrix;
                 if (BindMatrix(ipm.matrix(), n, n) is not { } m) break;
@@ -133,8 +137,66 @@ internal sealed partial class Binder
             _diagnostics.ReportInvalidDefinition(Span(s), $"signature ({p}, {q}, {r}) must count the {n} basis vectors of frame '{frame.Name}'");
             return null;
         }
-        return RationalMatrix.Diagonal(Enumerable.Repeat(Rational.One, p).Concat(Enumerable.Repeat(Rational.MinusOne, q))
-            .Concat(Enumerable.Repeat(Rational.Zero, r)).ToList());
+        var diagonal = Enumerable.Repeat(Rational.One, p).Concat(Enumerable.Repeat(Rational.MinusOne, q))
+            .Concat(Enumerable.Repeat(Rational.Zero, r)).ToList();
+        WarnIfZeroIndexedVectorIsPositive(s, frame, diagonal, (p, q, r));
+        return RationalMatrix.Diagonal(diagonal);
+    }
+
+    /// <summary>
+    /// The counts assign +1, then −1, then 0 in basis order, so `basis {e0, e1, e2, e3}` with (3, 0, 1)
+    /// makes e3 null, not the e0 the name suggests.
+    /// </summary>
+    private void WarnIfZeroIndexedVectorIsPositive(SignatureFrameContext s, FrameSymbol frame, List<Rational> diagonal, (int P, int Q, int R) counts)
+    {
+        var names = frame.BasisNames;
+        // e0 is the null vector of PGA and the odd one out of a spacetime ((3, 1): e0 negative);
+        // (1, 3) with e0 first is the usual timelike e0 and stays quiet.
+        var odd = counts.R > 0 || (counts.Q > 0 && counts.P > counts.Q);
+        if (!odd || names.Count < 2 || !names[0].EndsWith('0') || diagonal[0].Sign <= 0) return;
+        var others = names.Select((n, i) => (n, d: diagonal[i])).Where(x => x.d.Sign <= 0)
+            .Select(x => $"{x.n} {(x.d.IsZero ? "null" : "negative")}").ToList();
+        // The suggestion swaps the first vector with the last null or negative one.
+        var swapped = diagonal.ToList();
+        var last = swapped.FindLastIndex(d => d.Sign <= 0);
+        (swapped[0], swapped[last]) = (swapped[last], swapped[0]);
+        var named = string.Join(", ", names.Select((n, i) => $"{n}: {(swapped[i].Sign > 0 ? "+1" : swapped[i].Sign < 0 ? "-1" : "0")}"));
+        _diagnostics.ReportSignatureOrder(Span(s),
+            $"signature ({counts.P}, {counts.Q}, {counts.R}) counts +1, -1, 0 in basis order: it makes {names[0]} positive and {string.Join(", ", others)}; "
+            + $"to choose by name write e.g. signature {{{named}}}");
+    }
+
+    /// <summary>signature {e0: 0, e1: +1, …}: every basis vector once, its square an exact rational.</summary>
+    private RationalMatrix? BindNamedSignature(NamedSignatureFrameContext s, FrameSymbol frame)
+    {
+        var squares = new Rational?[frame.Dimension];
+        var ok = true;
+        foreach (var entry in s.signatureEntry())
+        {
+            var name = entry.name().GetText();
+            var i = frame.IndexOfBasis(name);
+            if (i < 0)
+            {
+                ReportUnknown(Span(entry.name()), $"basis vector of frame '{frame.Name}'", name, frame.BasisNames);
+                ok = false;
+                continue;
+            }
+            if (squares[i] is not null)
+            {
+                _diagnostics.ReportInvalidDefinition(Span(entry), $"signature gives basis vector '{name}' twice");
+                ok = false;
+                continue;
+            }
+            if (EvaluateRational(entry.expr(), "the square of a basis vector") is { } square) squares[i] = square;
+            else ok = false;
+        }
+        var missing = frame.BasisNames.Where((_, i) => squares[i] is null && ok).ToList();
+        if (missing.Count > 0)
+        {
+            _diagnostics.ReportInvalidDefinition(Span(s), $"signature does not give the square of {string.Join(", ", missing.Select(m => $"'{m}'"))}");
+            return null;
+        }
+        return ok ? RationalMatrix.Diagonal(squares.Select(x => x!.Value).ToList()) : null;
     }
 
     /// <summary>The position in <paramref name="whole"/> of each basis vector of the subspace frame, or null after reporting unknown ones.</summary>

@@ -36,6 +36,12 @@ frameBody
     | IPM '=' matrix                                         # ipmFrame
     | TRANSFORM name BY BCM '=' matrix                       # transformedFrame
     | SIGNATURE '(' expr ',' expr (',' expr)? ')'            # signatureFrame
+    | SIGNATURE '{' signatureEntry (',' signatureEntry)* '}'  # namedSignatureFrame
+    ;
+
+// `e0: 0`: the square of one basis vector, by name.
+signatureEntry
+    : name ':' expr
     ;
 
 matrix

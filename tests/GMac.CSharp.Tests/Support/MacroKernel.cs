@@ -32,9 +32,11 @@ internal sealed class MacroKernel
 
     public CompiledKernel Kernel => _kernel;
 
-    public static MacroKernel Create(string macro, string scalarType)
+    public static MacroKernel Create(string macro, string scalarType) => Create(macro, scalarType, SharedDsl.Context);
+
+    /// <summary>A macro of another DSL project (the library plus test files).</summary>
+    public static MacroKernel Create(string macro, string scalarType, GMac.CSharp.BindingPoints.GenerationContext context)
     {
-        var context = SharedDsl.Context;
         var bindings = context.Generator.DefaultBindings(macro);
         var outcome = context.Generator.Generate(macro, bindings, 1);
         Assert.True(outcome.Succeeded, string.Join("\n", outcome.Errors));

@@ -129,6 +129,8 @@ public sealed class AlgebraicValueNumberingPass : IOptimizerPass
                         ("exp", 1) => Scalar.Exp(args[0]),
                         ("log", 1) => Scalar.Log(args[0]),
                         ("abs", 1) => Scalar.Abs(args[0]),
+                        ("sinh", 1) => Scalar.HyperbolicSine(args[0]),
+                        ("cosh", 1) => Scalar.HyperbolicCosine(args[0]),
                         ("atan2", 2) => Scalar.Atan2(args[0], args[1]),
                         _ => null,
                     };

@@ -51,21 +51,22 @@ internal partial class GMacDslParser : Parser {
 		WS=73, ERROR_CHAR=74;
 	public const int
 		RULE_compilationUnit = 0, RULE_definition = 1, RULE_frameDefinition = 2, 
-		RULE_basisList = 3, RULE_frameBody = 4, RULE_matrix = 5, RULE_matrixRow = 6, 
-		RULE_transformDefinition = 7, RULE_transformBody = 8, RULE_subspaceDefinition = 9, 
-		RULE_subspaceBody = 10, RULE_classDefinition = 11, RULE_classItem = 12, 
-		RULE_constantDefinition = 13, RULE_coefficientList = 14, RULE_coefficient = 15, 
-		RULE_bladeName = 16, RULE_bindingDefinition = 17, RULE_limitList = 18, 
-		RULE_limit = 19, RULE_macroDefinition = 20, RULE_parameterList = 21, RULE_parameter = 22, 
-		RULE_statement = 23, RULE_callArgument = 24, RULE_expr = 25, RULE_memberReference = 26, 
-		RULE_number = 27, RULE_qualifiedName = 28, RULE_name = 29;
+		RULE_basisList = 3, RULE_frameBody = 4, RULE_signatureEntry = 5, RULE_matrix = 6, 
+		RULE_matrixRow = 7, RULE_transformDefinition = 8, RULE_transformBody = 9, 
+		RULE_subspaceDefinition = 10, RULE_subspaceBody = 11, RULE_classDefinition = 12, 
+		RULE_classItem = 13, RULE_constantDefinition = 14, RULE_coefficientList = 15, 
+		RULE_coefficient = 16, RULE_bladeName = 17, RULE_bindingDefinition = 18, 
+		RULE_limitList = 19, RULE_limit = 20, RULE_macroDefinition = 21, RULE_parameterList = 22, 
+		RULE_parameter = 23, RULE_statement = 24, RULE_callArgument = 25, RULE_expr = 26, 
+		RULE_memberReference = 27, RULE_number = 28, RULE_qualifiedName = 29, 
+		RULE_name = 30;
 	public static readonly string[] ruleNames = {
 		"compilationUnit", "definition", "frameDefinition", "basisList", "frameBody", 
-		"matrix", "matrixRow", "transformDefinition", "transformBody", "subspaceDefinition", 
-		"subspaceBody", "classDefinition", "classItem", "constantDefinition", 
-		"coefficientList", "coefficient", "bladeName", "bindingDefinition", "limitList", 
-		"limit", "macroDefinition", "parameterList", "parameter", "statement", 
-		"callArgument", "expr", "memberReference", "number", "qualifiedName", 
+		"signatureEntry", "matrix", "matrixRow", "transformDefinition", "transformBody", 
+		"subspaceDefinition", "subspaceBody", "classDefinition", "classItem", 
+		"constantDefinition", "coefficientList", "coefficient", "bladeName", "bindingDefinition", 
+		"limitList", "limit", "macroDefinition", "parameterList", "parameter", 
+		"statement", "callArgument", "expr", "memberReference", "number", "qualifiedName", 
 		"name"
 	};
 
@@ -154,21 +155,21 @@ internal partial class GMacDslParser : Parser {
 		try {
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 63;
+			State = 65;
 			ErrorHandler.Sync(this);
 			_la = TokenStream.LA(1);
 			while (_la==DEFINE) {
 				{
 				{
-				State = 60;
+				State = 62;
 				definition();
 				}
 				}
-				State = 65;
+				State = 67;
 				ErrorHandler.Sync(this);
 				_la = TokenStream.LA(1);
 			}
-			State = 66;
+			State = 68;
 			Match(Eof);
 			}
 		}
@@ -223,55 +224,55 @@ internal partial class GMacDslParser : Parser {
 		DefinitionContext _localctx = new DefinitionContext(Context, State);
 		EnterRule(_localctx, 2, RULE_definition);
 		try {
-			State = 75;
+			State = 77;
 			ErrorHandler.Sync(this);
 			switch ( Interpreter.AdaptivePredict(TokenStream,1,Context) ) {
 			case 1:
 				EnterOuterAlt(_localctx, 1);
 				{
-				State = 68;
+				State = 70;
 				frameDefinition();
 				}
 				break;
 			case 2:
 				EnterOuterAlt(_localctx, 2);
 				{
-				State = 69;
+				State = 71;
 				transformDefinition();
 				}
 				break;
 			case 3:
 				EnterOuterAlt(_localctx, 3);
 				{
-				State = 70;
+				State = 72;
 				subspaceDefinition();
 				}
 				break;
 			case 4:
 				EnterOuterAlt(_localctx, 4);
 				{
-				State = 71;
+				State = 73;
 				classDefinition();
 				}
 				break;
 			case 5:
 				EnterOuterAlt(_localctx, 5);
 				{
-				State = 72;
+				State = 74;
 				constantDefinition();
 				}
 				break;
 			case 6:
 				EnterOuterAlt(_localctx, 6);
 				{
-				State = 73;
+				State = 75;
 				bindingDefinition();
 				}
 				break;
 			case 7:
 				EnterOuterAlt(_localctx, 7);
 				{
-				State = 74;
+				State = 76;
 				macroDefinition();
 				}
 				break;
@@ -325,21 +326,21 @@ internal partial class GMacDslParser : Parser {
 		try {
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 77;
-			Match(DEFINE);
-			State = 78;
-			Match(FRAME);
 			State = 79;
-			name();
+			Match(DEFINE);
 			State = 80;
-			Match(AS);
+			Match(FRAME);
 			State = 81;
-			basisList();
+			name();
 			State = 82;
-			frameBody();
+			Match(AS);
 			State = 83;
-			Match(END);
+			basisList();
 			State = 84;
+			frameBody();
+			State = 85;
+			Match(END);
+			State = 86;
 			Match(FRAME);
 			}
 		}
@@ -390,39 +391,39 @@ internal partial class GMacDslParser : Parser {
 		try {
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 86;
-			Match(BASIS);
 			State = 88;
+			Match(BASIS);
+			State = 90;
 			ErrorHandler.Sync(this);
 			_la = TokenStream.LA(1);
 			if (_la==COLON) {
 				{
-				State = 87;
+				State = 89;
 				Match(COLON);
 				}
 			}
 
-			State = 90;
+			State = 92;
 			Match(LBRACE);
-			State = 91;
+			State = 93;
 			name();
-			State = 96;
+			State = 98;
 			ErrorHandler.Sync(this);
 			_la = TokenStream.LA(1);
 			while (_la==COMMA) {
 				{
 				{
-				State = 92;
+				State = 94;
 				Match(COMMA);
-				State = 93;
+				State = 95;
 				name();
 				}
 				}
-				State = 98;
+				State = 100;
 				ErrorHandler.Sync(this);
 				_la = TokenStream.LA(1);
 			}
-			State = 99;
+			State = 101;
 			Match(RBRACE);
 			}
 		}
@@ -541,6 +542,28 @@ internal partial class GMacDslParser : Parser {
 			else return visitor.VisitChildren(this);
 		}
 	}
+	public partial class NamedSignatureFrameContext : FrameBodyContext {
+		[System.Diagnostics.DebuggerNonUserCode] public ITerminalNode SIGNATURE() { return GetToken(GMacDslParser.SIGNATURE, 0); }
+		[System.Diagnostics.DebuggerNonUserCode] public ITerminalNode LBRACE() { return GetToken(GMacDslParser.LBRACE, 0); }
+		[System.Diagnostics.DebuggerNonUserCode] public SignatureEntryContext[] signatureEntry() {
+			return GetRuleContexts<SignatureEntryContext>();
+		}
+		[System.Diagnostics.DebuggerNonUserCode] public SignatureEntryContext signatureEntry(int i) {
+			return GetRuleContext<SignatureEntryContext>(i);
+		}
+		[System.Diagnostics.DebuggerNonUserCode] public ITerminalNode RBRACE() { return GetToken(GMacDslParser.RBRACE, 0); }
+		[System.Diagnostics.DebuggerNonUserCode] public ITerminalNode[] COMMA() { return GetTokens(GMacDslParser.COMMA); }
+		[System.Diagnostics.DebuggerNonUserCode] public ITerminalNode COMMA(int i) {
+			return GetToken(GMacDslParser.COMMA, i);
+		}
+		public NamedSignatureFrameContext(FrameBodyContext context) { CopyFrom(context); }
+		[System.Diagnostics.DebuggerNonUserCode]
+		public override TResult Accept<TResult>(IParseTreeVisitor<TResult> visitor) {
+			IGMacDslVisitor<TResult> typedVisitor = visitor as IGMacDslVisitor<TResult>;
+			if (typedVisitor != null) return typedVisitor.VisitNamedSignatureFrame(this);
+			else return visitor.VisitChildren(this);
+		}
+	}
 
 	[RuleVersion(0)]
 	public FrameBodyContext frameBody() {
@@ -548,101 +571,176 @@ internal partial class GMacDslParser : Parser {
 		EnterRule(_localctx, 8, RULE_frameBody);
 		int _la;
 		try {
-			State = 128;
+			State = 142;
 			ErrorHandler.Sync(this);
-			switch (TokenStream.LA(1)) {
-			case EUCLIDEAN:
+			switch ( Interpreter.AdaptivePredict(TokenStream,6,Context) ) {
+			case 1:
 				_localctx = new EuclideanFrameContext(_localctx);
 				EnterOuterAlt(_localctx, 1);
 				{
-				State = 101;
+				State = 103;
 				Match(EUCLIDEAN);
 				}
 				break;
-			case SUBSPACE:
+			case 2:
 				_localctx = new SubspaceFrameContext(_localctx);
 				EnterOuterAlt(_localctx, 2);
 				{
-				State = 102;
-				Match(SUBSPACE);
-				State = 103;
-				Match(OF);
 				State = 104;
-				name();
-				}
-				break;
-			case ORTHOGONALIZE:
-				_localctx = new OrthogonalizeFrameContext(_localctx);
-				EnterOuterAlt(_localctx, 3);
-				{
+				Match(SUBSPACE);
 				State = 105;
-				Match(ORTHOGONALIZE);
+				Match(OF);
 				State = 106;
 				name();
 				}
 				break;
-			case IPM:
+			case 3:
+				_localctx = new OrthogonalizeFrameContext(_localctx);
+				EnterOuterAlt(_localctx, 3);
+				{
+				State = 107;
+				Match(ORTHOGONALIZE);
+				State = 108;
+				name();
+				}
+				break;
+			case 4:
 				_localctx = new IpmFrameContext(_localctx);
 				EnterOuterAlt(_localctx, 4);
 				{
-				State = 107;
-				Match(IPM);
-				State = 108;
-				Match(ASSIGN);
 				State = 109;
+				Match(IPM);
+				State = 110;
+				Match(ASSIGN);
+				State = 111;
 				matrix();
 				}
 				break;
-			case TRANSFORM:
+			case 5:
 				_localctx = new TransformedFrameContext(_localctx);
 				EnterOuterAlt(_localctx, 5);
 				{
-				State = 110;
-				Match(TRANSFORM);
-				State = 111;
-				name();
 				State = 112;
-				Match(BY);
+				Match(TRANSFORM);
 				State = 113;
-				Match(BCM);
+				name();
 				State = 114;
-				Match(ASSIGN);
+				Match(BY);
 				State = 115;
+				Match(BCM);
+				State = 116;
+				Match(ASSIGN);
+				State = 117;
 				matrix();
 				}
 				break;
-			case SIGNATURE:
+			case 6:
 				_localctx = new SignatureFrameContext(_localctx);
 				EnterOuterAlt(_localctx, 6);
 				{
-				State = 117;
-				Match(SIGNATURE);
-				State = 118;
-				Match(LPAREN);
 				State = 119;
-				expr(0);
+				Match(SIGNATURE);
 				State = 120;
-				Match(COMMA);
+				Match(LPAREN);
 				State = 121;
 				expr(0);
-				State = 124;
+				State = 122;
+				Match(COMMA);
+				State = 123;
+				expr(0);
+				State = 126;
 				ErrorHandler.Sync(this);
 				_la = TokenStream.LA(1);
 				if (_la==COMMA) {
 					{
-					State = 122;
+					State = 124;
 					Match(COMMA);
-					State = 123;
+					State = 125;
 					expr(0);
 					}
 				}
 
-				State = 126;
+				State = 128;
 				Match(RPAREN);
 				}
 				break;
-			default:
-				throw new NoViableAltException(this);
+			case 7:
+				_localctx = new NamedSignatureFrameContext(_localctx);
+				EnterOuterAlt(_localctx, 7);
+				{
+				State = 130;
+				Match(SIGNATURE);
+				State = 131;
+				Match(LBRACE);
+				State = 132;
+				signatureEntry();
+				State = 137;
+				ErrorHandler.Sync(this);
+				_la = TokenStream.LA(1);
+				while (_la==COMMA) {
+					{
+					{
+					State = 133;
+					Match(COMMA);
+					State = 134;
+					signatureEntry();
+					}
+					}
+					State = 139;
+					ErrorHandler.Sync(this);
+					_la = TokenStream.LA(1);
+				}
+				State = 140;
+				Match(RBRACE);
+				}
+				break;
+			}
+		}
+		catch (RecognitionException re) {
+			_localctx.exception = re;
+			ErrorHandler.ReportError(this, re);
+			ErrorHandler.Recover(this, re);
+		}
+		finally {
+			ExitRule();
+		}
+		return _localctx;
+	}
+
+	public partial class SignatureEntryContext : ParserRuleContext {
+		[System.Diagnostics.DebuggerNonUserCode] public NameContext name() {
+			return GetRuleContext<NameContext>(0);
+		}
+		[System.Diagnostics.DebuggerNonUserCode] public ITerminalNode COLON() { return GetToken(GMacDslParser.COLON, 0); }
+		[System.Diagnostics.DebuggerNonUserCode] public ExprContext expr() {
+			return GetRuleContext<ExprContext>(0);
+		}
+		public SignatureEntryContext(ParserRuleContext parent, int invokingState)
+			: base(parent, invokingState)
+		{
+		}
+		public override int RuleIndex { get { return RULE_signatureEntry; } }
+		[System.Diagnostics.DebuggerNonUserCode]
+		public override TResult Accept<TResult>(IParseTreeVisitor<TResult> visitor) {
+			IGMacDslVisitor<TResult> typedVisitor = visitor as IGMacDslVisitor<TResult>;
+			if (typedVisitor != null) return typedVisitor.VisitSignatureEntry(this);
+			else return visitor.VisitChildren(this);
+		}
+	}
+
+	[RuleVersion(0)]
+	public SignatureEntryContext signatureEntry() {
+		SignatureEntryContext _localctx = new SignatureEntryContext(Context, State);
+		EnterRule(_localctx, 10, RULE_signatureEntry);
+		try {
+			EnterOuterAlt(_localctx, 1);
+			{
+			State = 144;
+			name();
+			State = 145;
+			Match(COLON);
+			State = 146;
+			expr(0);
 			}
 		}
 		catch (RecognitionException re) {
@@ -685,32 +783,32 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public MatrixContext matrix() {
 		MatrixContext _localctx = new MatrixContext(Context, State);
-		EnterRule(_localctx, 10, RULE_matrix);
+		EnterRule(_localctx, 12, RULE_matrix);
 		int _la;
 		try {
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 130;
+			State = 148;
 			Match(LBRACE);
-			State = 131;
+			State = 149;
 			matrixRow();
-			State = 136;
+			State = 154;
 			ErrorHandler.Sync(this);
 			_la = TokenStream.LA(1);
 			while (_la==COMMA) {
 				{
 				{
-				State = 132;
+				State = 150;
 				Match(COMMA);
-				State = 133;
+				State = 151;
 				matrixRow();
 				}
 				}
-				State = 138;
+				State = 156;
 				ErrorHandler.Sync(this);
 				_la = TokenStream.LA(1);
 			}
-			State = 139;
+			State = 157;
 			Match(RBRACE);
 			}
 		}
@@ -754,32 +852,32 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public MatrixRowContext matrixRow() {
 		MatrixRowContext _localctx = new MatrixRowContext(Context, State);
-		EnterRule(_localctx, 12, RULE_matrixRow);
+		EnterRule(_localctx, 14, RULE_matrixRow);
 		int _la;
 		try {
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 141;
+			State = 159;
 			Match(LBRACE);
-			State = 142;
+			State = 160;
 			expr(0);
-			State = 147;
+			State = 165;
 			ErrorHandler.Sync(this);
 			_la = TokenStream.LA(1);
 			while (_la==COMMA) {
 				{
 				{
-				State = 143;
+				State = 161;
 				Match(COMMA);
-				State = 144;
+				State = 162;
 				expr(0);
 				}
 				}
-				State = 149;
+				State = 167;
 				ErrorHandler.Sync(this);
 				_la = TokenStream.LA(1);
 			}
-			State = 150;
+			State = 168;
 			Match(RBRACE);
 			}
 		}
@@ -829,31 +927,31 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public TransformDefinitionContext transformDefinition() {
 		TransformDefinitionContext _localctx = new TransformDefinitionContext(Context, State);
-		EnterRule(_localctx, 14, RULE_transformDefinition);
+		EnterRule(_localctx, 16, RULE_transformDefinition);
 		try {
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 152;
+			State = 170;
 			Match(DEFINE);
-			State = 153;
+			State = 171;
 			Match(TRANSFORM);
-			State = 154;
+			State = 172;
 			name();
-			State = 155;
+			State = 173;
 			Match(COLON);
-			State = 156;
+			State = 174;
 			name();
-			State = 157;
+			State = 175;
 			Match(ARROW);
-			State = 158;
+			State = 176;
 			name();
-			State = 159;
+			State = 177;
 			Match(AS);
-			State = 160;
+			State = 178;
 			transformBody();
-			State = 161;
+			State = 179;
 			Match(END);
-			State = 162;
+			State = 180;
 			Match(TRANSFORM);
 			}
 		}
@@ -981,16 +1079,16 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public TransformBodyContext transformBody() {
 		TransformBodyContext _localctx = new TransformBodyContext(Context, State);
-		EnterRule(_localctx, 16, RULE_transformBody);
+		EnterRule(_localctx, 18, RULE_transformBody);
 		try {
-			State = 187;
+			State = 205;
 			ErrorHandler.Sync(this);
-			switch ( Interpreter.AdaptivePredict(TokenStream,8,Context) ) {
+			switch ( Interpreter.AdaptivePredict(TokenStream,9,Context) ) {
 			case 1:
 				_localctx = new IdentityTransformContext(_localctx);
 				EnterOuterAlt(_localctx, 1);
 				{
-				State = 164;
+				State = 182;
 				Match(IDENTITY);
 				}
 				break;
@@ -998,11 +1096,11 @@ internal partial class GMacDslParser : Parser {
 				_localctx = new AliasTransformContext(_localctx);
 				EnterOuterAlt(_localctx, 2);
 				{
-				State = 165;
+				State = 183;
 				Match(ALIAS);
-				State = 166;
+				State = 184;
 				Match(OF);
-				State = 167;
+				State = 185;
 				name();
 				}
 				break;
@@ -1010,11 +1108,11 @@ internal partial class GMacDslParser : Parser {
 				_localctx = new InverseTransformContext(_localctx);
 				EnterOuterAlt(_localctx, 3);
 				{
-				State = 168;
+				State = 186;
 				Match(INVERSE);
-				State = 169;
+				State = 187;
 				Match(OF);
-				State = 170;
+				State = 188;
 				name();
 				}
 				break;
@@ -1022,11 +1120,11 @@ internal partial class GMacDslParser : Parser {
 				_localctx = new TransposeTransformContext(_localctx);
 				EnterOuterAlt(_localctx, 4);
 				{
-				State = 171;
+				State = 189;
 				Match(TRANSPOSE);
-				State = 172;
+				State = 190;
 				Match(OF);
-				State = 173;
+				State = 191;
 				name();
 				}
 				break;
@@ -1034,13 +1132,13 @@ internal partial class GMacDslParser : Parser {
 				_localctx = new InverseTransposeTransformContext(_localctx);
 				EnterOuterAlt(_localctx, 5);
 				{
-				State = 174;
+				State = 192;
 				Match(INVERSE);
-				State = 175;
+				State = 193;
 				Match(TRANSPOSE);
-				State = 176;
+				State = 194;
 				Match(OF);
-				State = 177;
+				State = 195;
 				name();
 				}
 				break;
@@ -1048,15 +1146,15 @@ internal partial class GMacDslParser : Parser {
 				_localctx = new BcmOutermorphismContext(_localctx);
 				EnterOuterAlt(_localctx, 6);
 				{
-				State = 178;
+				State = 196;
 				Match(OUTERMORPHISM);
-				State = 179;
+				State = 197;
 				Match(USING);
-				State = 180;
+				State = 198;
 				name();
-				State = 181;
+				State = 199;
 				Match(DOT);
-				State = 182;
+				State = 200;
 				Match(BCM);
 				}
 				break;
@@ -1064,11 +1162,11 @@ internal partial class GMacDslParser : Parser {
 				_localctx = new MatrixOutermorphismContext(_localctx);
 				EnterOuterAlt(_localctx, 7);
 				{
-				State = 184;
+				State = 202;
 				Match(OUTERMORPHISM);
-				State = 185;
+				State = 203;
 				Match(USING);
-				State = 186;
+				State = 204;
 				matrix();
 				}
 				break;
@@ -1115,23 +1213,23 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public SubspaceDefinitionContext subspaceDefinition() {
 		SubspaceDefinitionContext _localctx = new SubspaceDefinitionContext(Context, State);
-		EnterRule(_localctx, 18, RULE_subspaceDefinition);
+		EnterRule(_localctx, 20, RULE_subspaceDefinition);
 		try {
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 189;
+			State = 207;
 			Match(DEFINE);
-			State = 190;
+			State = 208;
 			Match(SUBSPACE);
-			State = 191;
+			State = 209;
 			qualifiedName();
-			State = 192;
+			State = 210;
 			Match(AS);
-			State = 193;
+			State = 211;
 			subspaceBody();
-			State = 194;
+			State = 212;
 			Match(END);
-			State = 195;
+			State = 213;
 			Match(SUBSPACE);
 			}
 		}
@@ -1206,39 +1304,39 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public SubspaceBodyContext subspaceBody() {
 		SubspaceBodyContext _localctx = new SubspaceBodyContext(Context, State);
-		EnterRule(_localctx, 20, RULE_subspaceBody);
+		EnterRule(_localctx, 22, RULE_subspaceBody);
 		int _la;
 		try {
-			State = 221;
+			State = 239;
 			ErrorHandler.Sync(this);
 			switch (TokenStream.LA(1)) {
 			case BASIS:
 				_localctx = new BladeSubspaceContext(_localctx);
 				EnterOuterAlt(_localctx, 1);
 				{
-				State = 197;
+				State = 215;
 				Match(BASIS);
-				State = 198;
+				State = 216;
 				Match(LBRACE);
-				State = 199;
+				State = 217;
 				bladeName();
-				State = 204;
+				State = 222;
 				ErrorHandler.Sync(this);
 				_la = TokenStream.LA(1);
 				while (_la==COMMA) {
 					{
 					{
-					State = 200;
+					State = 218;
 					Match(COMMA);
-					State = 201;
+					State = 219;
 					bladeName();
 					}
 					}
-					State = 206;
+					State = 224;
 					ErrorHandler.Sync(this);
 					_la = TokenStream.LA(1);
 				}
-				State = 207;
+				State = 225;
 				Match(RBRACE);
 				}
 				break;
@@ -1246,29 +1344,29 @@ internal partial class GMacDslParser : Parser {
 				_localctx = new SpanSubspaceContext(_localctx);
 				EnterOuterAlt(_localctx, 2);
 				{
-				State = 209;
+				State = 227;
 				Match(GA_SPAN);
-				State = 210;
+				State = 228;
 				Match(LBRACE);
-				State = 211;
+				State = 229;
 				name();
-				State = 216;
+				State = 234;
 				ErrorHandler.Sync(this);
 				_la = TokenStream.LA(1);
 				while (_la==COMMA) {
 					{
 					{
-					State = 212;
+					State = 230;
 					Match(COMMA);
-					State = 213;
+					State = 231;
 					name();
 					}
 					}
-					State = 218;
+					State = 236;
 					ErrorHandler.Sync(this);
 					_la = TokenStream.LA(1);
 				}
-				State = 219;
+				State = 237;
 				Match(RBRACE);
 				}
 				break;
@@ -1329,67 +1427,67 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public ClassDefinitionContext classDefinition() {
 		ClassDefinitionContext _localctx = new ClassDefinitionContext(Context, State);
-		EnterRule(_localctx, 22, RULE_classDefinition);
+		EnterRule(_localctx, 24, RULE_classDefinition);
 		int _la;
 		try {
 			int _alt;
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 223;
+			State = 241;
 			Match(DEFINE);
-			State = 225;
+			State = 243;
 			ErrorHandler.Sync(this);
 			_la = TokenStream.LA(1);
 			if (_la==NORMALIZED) {
 				{
-				State = 224;
+				State = 242;
 				Match(NORMALIZED);
 				}
 			}
 
-			State = 227;
+			State = 245;
 			Match(MULTIVECTOR);
-			State = 228;
+			State = 246;
 			Match(CLASS);
-			State = 229;
+			State = 247;
 			qualifiedName();
-			State = 230;
+			State = 248;
 			Match(AS);
-			State = 231;
+			State = 249;
 			classItem();
-			State = 236;
+			State = 254;
 			ErrorHandler.Sync(this);
-			_alt = Interpreter.AdaptivePredict(TokenStream,13,Context);
+			_alt = Interpreter.AdaptivePredict(TokenStream,14,Context);
 			while ( _alt!=2 && _alt!=global::Antlr4.Runtime.Atn.ATN.INVALID_ALT_NUMBER ) {
 				if ( _alt==1 ) {
 					{
 					{
-					State = 232;
+					State = 250;
 					Match(SEMI);
-					State = 233;
+					State = 251;
 					classItem();
 					}
 					} 
 				}
-				State = 238;
+				State = 256;
 				ErrorHandler.Sync(this);
-				_alt = Interpreter.AdaptivePredict(TokenStream,13,Context);
+				_alt = Interpreter.AdaptivePredict(TokenStream,14,Context);
 			}
-			State = 240;
+			State = 258;
 			ErrorHandler.Sync(this);
 			_la = TokenStream.LA(1);
 			if (_la==SEMI) {
 				{
-				State = 239;
+				State = 257;
 				Match(SEMI);
 				}
 			}
 
-			State = 242;
+			State = 260;
 			Match(END);
-			State = 243;
+			State = 261;
 			Match(MULTIVECTOR);
-			State = 244;
+			State = 262;
 			Match(CLASS);
 			}
 		}
@@ -1458,16 +1556,16 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public ClassItemContext classItem() {
 		ClassItemContext _localctx = new ClassItemContext(Context, State);
-		EnterRule(_localctx, 24, RULE_classItem);
+		EnterRule(_localctx, 26, RULE_classItem);
 		try {
-			State = 252;
+			State = 270;
 			ErrorHandler.Sync(this);
-			switch ( Interpreter.AdaptivePredict(TokenStream,15,Context) ) {
+			switch ( Interpreter.AdaptivePredict(TokenStream,16,Context) ) {
 			case 1:
 				_localctx = new NormalizedItemContext(_localctx);
 				EnterOuterAlt(_localctx, 1);
 				{
-				State = 246;
+				State = 264;
 				Match(NORMALIZED);
 				}
 				break;
@@ -1475,11 +1573,11 @@ internal partial class GMacDslParser : Parser {
 				_localctx = new ConstantCoefficientItemContext(_localctx);
 				EnterOuterAlt(_localctx, 2);
 				{
-				State = 247;
+				State = 265;
 				bladeName();
-				State = 248;
+				State = 266;
 				Match(COLON);
-				State = 249;
+				State = 267;
 				expr(0);
 				}
 				break;
@@ -1487,7 +1585,7 @@ internal partial class GMacDslParser : Parser {
 				_localctx = new SubspaceItemContext(_localctx);
 				EnterOuterAlt(_localctx, 3);
 				{
-				State = 251;
+				State = 269;
 				qualifiedName();
 				}
 				break;
@@ -1535,25 +1633,25 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public ConstantDefinitionContext constantDefinition() {
 		ConstantDefinitionContext _localctx = new ConstantDefinitionContext(Context, State);
-		EnterRule(_localctx, 26, RULE_constantDefinition);
+		EnterRule(_localctx, 28, RULE_constantDefinition);
 		try {
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 254;
+			State = 272;
 			Match(DEFINE);
-			State = 255;
+			State = 273;
 			Match(CONSTANT);
-			State = 256;
+			State = 274;
 			qualifiedName();
-			State = 257;
+			State = 275;
 			Match(AS);
-			State = 258;
+			State = 276;
 			Match(MULTIVECTOR);
-			State = 259;
+			State = 277;
 			coefficientList();
-			State = 260;
+			State = 278;
 			Match(END);
-			State = 261;
+			State = 279;
 			Match(CONSTANT);
 			}
 		}
@@ -1597,45 +1695,45 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public CoefficientListContext coefficientList() {
 		CoefficientListContext _localctx = new CoefficientListContext(Context, State);
-		EnterRule(_localctx, 28, RULE_coefficientList);
+		EnterRule(_localctx, 30, RULE_coefficientList);
 		int _la;
 		try {
 			int _alt;
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 263;
+			State = 281;
 			Match(LBRACE);
-			State = 275;
+			State = 293;
 			ErrorHandler.Sync(this);
 			_la = TokenStream.LA(1);
 			if ((((_la) & ~0x3f) == 0 && ((1L << _la) & 549751619568L) != 0) || _la==INT || _la==ID) {
 				{
-				State = 264;
+				State = 282;
 				coefficient();
-				State = 269;
+				State = 287;
 				ErrorHandler.Sync(this);
-				_alt = Interpreter.AdaptivePredict(TokenStream,16,Context);
+				_alt = Interpreter.AdaptivePredict(TokenStream,17,Context);
 				while ( _alt!=2 && _alt!=global::Antlr4.Runtime.Atn.ATN.INVALID_ALT_NUMBER ) {
 					if ( _alt==1 ) {
 						{
 						{
-						State = 265;
+						State = 283;
 						Match(SEMI);
-						State = 266;
+						State = 284;
 						coefficient();
 						}
 						} 
 					}
-					State = 271;
+					State = 289;
 					ErrorHandler.Sync(this);
-					_alt = Interpreter.AdaptivePredict(TokenStream,16,Context);
+					_alt = Interpreter.AdaptivePredict(TokenStream,17,Context);
 				}
-				State = 273;
+				State = 291;
 				ErrorHandler.Sync(this);
 				_la = TokenStream.LA(1);
 				if (_la==SEMI) {
 					{
-					State = 272;
+					State = 290;
 					Match(SEMI);
 					}
 				}
@@ -1643,7 +1741,7 @@ internal partial class GMacDslParser : Parser {
 				}
 			}
 
-			State = 277;
+			State = 295;
 			Match(RBRACE);
 			}
 		}
@@ -1682,15 +1780,15 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public CoefficientContext coefficient() {
 		CoefficientContext _localctx = new CoefficientContext(Context, State);
-		EnterRule(_localctx, 30, RULE_coefficient);
+		EnterRule(_localctx, 32, RULE_coefficient);
 		try {
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 279;
+			State = 297;
 			bladeName();
-			State = 280;
+			State = 298;
 			Match(COLON);
-			State = 281;
+			State = 299;
 			expr(0);
 			}
 		}
@@ -1733,16 +1831,16 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public BladeNameContext bladeName() {
 		BladeNameContext _localctx = new BladeNameContext(Context, State);
-		EnterRule(_localctx, 32, RULE_bladeName);
+		EnterRule(_localctx, 34, RULE_bladeName);
 		int _la;
 		try {
-			State = 292;
+			State = 310;
 			ErrorHandler.Sync(this);
 			switch (TokenStream.LA(1)) {
 			case INT:
 				EnterOuterAlt(_localctx, 1);
 				{
-				State = 283;
+				State = 301;
 				Match(INT);
 				}
 				break;
@@ -1783,21 +1881,21 @@ internal partial class GMacDslParser : Parser {
 			case ID:
 				EnterOuterAlt(_localctx, 2);
 				{
-				State = 284;
+				State = 302;
 				name();
-				State = 289;
+				State = 307;
 				ErrorHandler.Sync(this);
 				_la = TokenStream.LA(1);
 				while (_la==CARET) {
 					{
 					{
-					State = 285;
+					State = 303;
 					Match(CARET);
-					State = 286;
+					State = 304;
 					name();
 					}
 					}
-					State = 291;
+					State = 309;
 					ErrorHandler.Sync(this);
 					_la = TokenStream.LA(1);
 				}
@@ -1860,46 +1958,46 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public BindingDefinitionContext bindingDefinition() {
 		BindingDefinitionContext _localctx = new BindingDefinitionContext(Context, State);
-		EnterRule(_localctx, 34, RULE_bindingDefinition);
+		EnterRule(_localctx, 36, RULE_bindingDefinition);
 		int _la;
 		try {
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 294;
+			State = 312;
 			Match(DEFINE);
-			State = 295;
+			State = 313;
 			Match(BINDING);
-			State = 296;
+			State = 314;
 			name();
-			State = 297;
+			State = 315;
 			Match(AS);
-			State = 298;
+			State = 316;
 			Match(USE);
-			State = 299;
+			State = 317;
 			Match(FRAME);
-			State = 300;
+			State = 318;
 			name();
-			State = 301;
+			State = 319;
 			Match(BIND);
-			State = 302;
+			State = 320;
 			coefficientList();
-			State = 306;
+			State = 324;
 			ErrorHandler.Sync(this);
 			_la = TokenStream.LA(1);
 			while (_la==MIN || _la==MAX) {
 				{
 				{
-				State = 303;
+				State = 321;
 				limitList();
 				}
 				}
-				State = 308;
+				State = 326;
 				ErrorHandler.Sync(this);
 				_la = TokenStream.LA(1);
 			}
-			State = 309;
+			State = 327;
 			Match(END);
-			State = 310;
+			State = 328;
 			Match(BINDING);
 			}
 		}
@@ -1945,13 +2043,13 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public LimitListContext limitList() {
 		LimitListContext _localctx = new LimitListContext(Context, State);
-		EnterRule(_localctx, 36, RULE_limitList);
+		EnterRule(_localctx, 38, RULE_limitList);
 		int _la;
 		try {
 			int _alt;
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 312;
+			State = 330;
 			_la = TokenStream.LA(1);
 			if ( !(_la==MIN || _la==MAX) ) {
 			ErrorHandler.RecoverInline(this);
@@ -1960,39 +2058,39 @@ internal partial class GMacDslParser : Parser {
 				ErrorHandler.ReportMatch(this);
 			    Consume();
 			}
-			State = 313;
+			State = 331;
 			Match(LBRACE);
-			State = 325;
+			State = 343;
 			ErrorHandler.Sync(this);
 			_la = TokenStream.LA(1);
 			if ((((_la) & ~0x3f) == 0 && ((1L << _la) & 72058143789547504L) != 0) || _la==ID) {
 				{
-				State = 314;
+				State = 332;
 				limit();
-				State = 319;
+				State = 337;
 				ErrorHandler.Sync(this);
-				_alt = Interpreter.AdaptivePredict(TokenStream,22,Context);
+				_alt = Interpreter.AdaptivePredict(TokenStream,23,Context);
 				while ( _alt!=2 && _alt!=global::Antlr4.Runtime.Atn.ATN.INVALID_ALT_NUMBER ) {
 					if ( _alt==1 ) {
 						{
 						{
-						State = 315;
+						State = 333;
 						Match(SEMI);
-						State = 316;
+						State = 334;
 						limit();
 						}
 						} 
 					}
-					State = 321;
+					State = 339;
 					ErrorHandler.Sync(this);
-					_alt = Interpreter.AdaptivePredict(TokenStream,22,Context);
+					_alt = Interpreter.AdaptivePredict(TokenStream,23,Context);
 				}
-				State = 323;
+				State = 341;
 				ErrorHandler.Sync(this);
 				_la = TokenStream.LA(1);
 				if (_la==SEMI) {
 					{
-					State = 322;
+					State = 340;
 					Match(SEMI);
 					}
 				}
@@ -2000,7 +2098,7 @@ internal partial class GMacDslParser : Parser {
 				}
 			}
 
-			State = 327;
+			State = 345;
 			Match(RBRACE);
 			}
 		}
@@ -2042,16 +2140,16 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public LimitContext limit() {
 		LimitContext _localctx = new LimitContext(Context, State);
-		EnterRule(_localctx, 38, RULE_limit);
+		EnterRule(_localctx, 40, RULE_limit);
 		try {
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 331;
+			State = 349;
 			ErrorHandler.Sync(this);
 			switch (TokenStream.LA(1)) {
 			case LT:
 				{
-				State = 329;
+				State = 347;
 				memberReference();
 				}
 				break;
@@ -2091,16 +2189,16 @@ internal partial class GMacDslParser : Parser {
 			case OFF:
 			case ID:
 				{
-				State = 330;
+				State = 348;
 				name();
 				}
 				break;
 			default:
 				throw new NoViableAltException(this);
 			}
-			State = 333;
+			State = 351;
 			Match(COLON);
-			State = 334;
+			State = 352;
 			expr(0);
 			}
 		}
@@ -2161,52 +2259,52 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public MacroDefinitionContext macroDefinition() {
 		MacroDefinitionContext _localctx = new MacroDefinitionContext(Context, State);
-		EnterRule(_localctx, 40, RULE_macroDefinition);
+		EnterRule(_localctx, 42, RULE_macroDefinition);
 		int _la;
 		try {
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 336;
+			State = 354;
 			Match(DEFINE);
-			State = 337;
+			State = 355;
 			Match(MACRO);
-			State = 338;
+			State = 356;
 			name();
-			State = 339;
+			State = 357;
 			Match(AS);
-			State = 340;
+			State = 358;
 			Match(INPUTS);
-			State = 341;
+			State = 359;
 			Match(COLON);
-			State = 342;
+			State = 360;
 			parameterList();
-			State = 343;
+			State = 361;
 			Match(OUTPUTS);
-			State = 344;
+			State = 362;
 			Match(COLON);
-			State = 345;
+			State = 363;
 			parameterList();
-			State = 346;
+			State = 364;
 			Match(PERFORMS);
-			State = 347;
+			State = 365;
 			Match(COLON);
-			State = 351;
+			State = 369;
 			ErrorHandler.Sync(this);
 			_la = TokenStream.LA(1);
 			while ((((_la) & ~0x3f) == 0 && ((1L << _la) & 576742777031753712L) != 0) || _la==ID) {
 				{
 				{
-				State = 348;
+				State = 366;
 				statement();
 				}
 				}
-				State = 353;
+				State = 371;
 				ErrorHandler.Sync(this);
 				_la = TokenStream.LA(1);
 			}
-			State = 354;
+			State = 372;
 			Match(END);
-			State = 355;
+			State = 373;
 			Match(MACRO);
 			}
 		}
@@ -2250,45 +2348,45 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public ParameterListContext parameterList() {
 		ParameterListContext _localctx = new ParameterListContext(Context, State);
-		EnterRule(_localctx, 42, RULE_parameterList);
+		EnterRule(_localctx, 44, RULE_parameterList);
 		int _la;
 		try {
 			int _alt;
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 357;
+			State = 375;
 			Match(LBRACE);
-			State = 369;
+			State = 387;
 			ErrorHandler.Sync(this);
 			_la = TokenStream.LA(1);
 			if ((((_la) & ~0x3f) == 0 && ((1L << _la) & 549751619568L) != 0) || _la==ID) {
 				{
-				State = 358;
+				State = 376;
 				parameter();
-				State = 363;
+				State = 381;
 				ErrorHandler.Sync(this);
-				_alt = Interpreter.AdaptivePredict(TokenStream,27,Context);
+				_alt = Interpreter.AdaptivePredict(TokenStream,28,Context);
 				while ( _alt!=2 && _alt!=global::Antlr4.Runtime.Atn.ATN.INVALID_ALT_NUMBER ) {
 					if ( _alt==1 ) {
 						{
 						{
-						State = 359;
+						State = 377;
 						Match(SEMI);
-						State = 360;
+						State = 378;
 						parameter();
 						}
 						} 
 					}
-					State = 365;
+					State = 383;
 					ErrorHandler.Sync(this);
-					_alt = Interpreter.AdaptivePredict(TokenStream,27,Context);
+					_alt = Interpreter.AdaptivePredict(TokenStream,28,Context);
 				}
-				State = 367;
+				State = 385;
 				ErrorHandler.Sync(this);
 				_la = TokenStream.LA(1);
 				if (_la==SEMI) {
 					{
-					State = 366;
+					State = 384;
 					Match(SEMI);
 					}
 				}
@@ -2296,7 +2394,7 @@ internal partial class GMacDslParser : Parser {
 				}
 			}
 
-			State = 371;
+			State = 389;
 			Match(RBRACE);
 			}
 		}
@@ -2336,14 +2434,14 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public ParameterContext parameter() {
 		ParameterContext _localctx = new ParameterContext(Context, State);
-		EnterRule(_localctx, 44, RULE_parameter);
+		EnterRule(_localctx, 46, RULE_parameter);
 		int _la;
 		try {
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 373;
+			State = 391;
 			name();
-			State = 374;
+			State = 392;
 			_la = TokenStream.LA(1);
 			if ( !(_la==AS || _la==COLON) ) {
 			ErrorHandler.RecoverInline(this);
@@ -2352,7 +2450,7 @@ internal partial class GMacDslParser : Parser {
 				ErrorHandler.ReportMatch(this);
 			    Consume();
 			}
-			State = 375;
+			State = 393;
 			qualifiedName();
 			}
 		}
@@ -2459,29 +2557,29 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public StatementContext statement() {
 		StatementContext _localctx = new StatementContext(Context, State);
-		EnterRule(_localctx, 46, RULE_statement);
+		EnterRule(_localctx, 48, RULE_statement);
 		int _la;
 		try {
 			int _alt;
-			State = 413;
+			State = 431;
 			ErrorHandler.Sync(this);
-			switch ( Interpreter.AdaptivePredict(TokenStream,37,Context) ) {
+			switch ( Interpreter.AdaptivePredict(TokenStream,38,Context) ) {
 			case 1:
 				_localctx = new AssignmentStatementContext(_localctx);
 				EnterOuterAlt(_localctx, 1);
 				{
-				State = 377;
+				State = 395;
 				name();
-				State = 378;
+				State = 396;
 				Match(ASSIGN);
-				State = 379;
+				State = 397;
 				expr(0);
-				State = 381;
+				State = 399;
 				ErrorHandler.Sync(this);
-				switch ( Interpreter.AdaptivePredict(TokenStream,30,Context) ) {
+				switch ( Interpreter.AdaptivePredict(TokenStream,31,Context) ) {
 				case 1:
 					{
-					State = 380;
+					State = 398;
 					Match(SEMI);
 					}
 					break;
@@ -2492,43 +2590,43 @@ internal partial class GMacDslParser : Parser {
 				_localctx = new CallStatementContext(_localctx);
 				EnterOuterAlt(_localctx, 2);
 				{
-				State = 383;
+				State = 401;
 				Match(CALL);
-				State = 384;
+				State = 402;
 				name();
-				State = 385;
+				State = 403;
 				Match(LBRACE);
-				State = 397;
+				State = 415;
 				ErrorHandler.Sync(this);
 				_la = TokenStream.LA(1);
 				if ((((_la) & ~0x3f) == 0 && ((1L << _la) & 549751619568L) != 0) || _la==ID) {
 					{
-					State = 386;
+					State = 404;
 					callArgument();
-					State = 391;
+					State = 409;
 					ErrorHandler.Sync(this);
-					_alt = Interpreter.AdaptivePredict(TokenStream,31,Context);
+					_alt = Interpreter.AdaptivePredict(TokenStream,32,Context);
 					while ( _alt!=2 && _alt!=global::Antlr4.Runtime.Atn.ATN.INVALID_ALT_NUMBER ) {
 						if ( _alt==1 ) {
 							{
 							{
-							State = 387;
+							State = 405;
 							Match(SEMI);
-							State = 388;
+							State = 406;
 							callArgument();
 							}
 							} 
 						}
-						State = 393;
+						State = 411;
 						ErrorHandler.Sync(this);
-						_alt = Interpreter.AdaptivePredict(TokenStream,31,Context);
+						_alt = Interpreter.AdaptivePredict(TokenStream,32,Context);
 					}
-					State = 395;
+					State = 413;
 					ErrorHandler.Sync(this);
 					_la = TokenStream.LA(1);
 					if (_la==SEMI) {
 						{
-						State = 394;
+						State = 412;
 						Match(SEMI);
 						}
 					}
@@ -2536,14 +2634,14 @@ internal partial class GMacDslParser : Parser {
 					}
 				}
 
-				State = 399;
+				State = 417;
 				Match(RBRACE);
-				State = 401;
+				State = 419;
 				ErrorHandler.Sync(this);
-				switch ( Interpreter.AdaptivePredict(TokenStream,34,Context) ) {
+				switch ( Interpreter.AdaptivePredict(TokenStream,35,Context) ) {
 				case 1:
 					{
-					State = 400;
+					State = 418;
 					Match(SEMI);
 					}
 					break;
@@ -2554,14 +2652,14 @@ internal partial class GMacDslParser : Parser {
 				_localctx = new OutputStatementContext(_localctx);
 				EnterOuterAlt(_localctx, 3);
 				{
-				State = 403;
+				State = 421;
 				Match(OUTPUT_BLOCK);
-				State = 405;
+				State = 423;
 				ErrorHandler.Sync(this);
-				switch ( Interpreter.AdaptivePredict(TokenStream,35,Context) ) {
+				switch ( Interpreter.AdaptivePredict(TokenStream,36,Context) ) {
 				case 1:
 					{
-					State = 404;
+					State = 422;
 					Match(SEMI);
 					}
 					break;
@@ -2572,9 +2670,9 @@ internal partial class GMacDslParser : Parser {
 				_localctx = new JoinStatementContext(_localctx);
 				EnterOuterAlt(_localctx, 4);
 				{
-				State = 407;
+				State = 425;
 				Match(JOIN);
-				State = 408;
+				State = 426;
 				_la = TokenStream.LA(1);
 				if ( !(_la==ON || _la==OFF) ) {
 				ErrorHandler.RecoverInline(this);
@@ -2583,12 +2681,12 @@ internal partial class GMacDslParser : Parser {
 					ErrorHandler.ReportMatch(this);
 				    Consume();
 				}
-				State = 410;
+				State = 428;
 				ErrorHandler.Sync(this);
-				switch ( Interpreter.AdaptivePredict(TokenStream,36,Context) ) {
+				switch ( Interpreter.AdaptivePredict(TokenStream,37,Context) ) {
 				case 1:
 					{
-					State = 409;
+					State = 427;
 					Match(SEMI);
 					}
 					break;
@@ -2599,7 +2697,7 @@ internal partial class GMacDslParser : Parser {
 				_localctx = new EmptyStatementContext(_localctx);
 				EnterOuterAlt(_localctx, 5);
 				{
-				State = 412;
+				State = 430;
 				Match(SEMI);
 				}
 				break;
@@ -2640,15 +2738,15 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public CallArgumentContext callArgument() {
 		CallArgumentContext _localctx = new CallArgumentContext(Context, State);
-		EnterRule(_localctx, 48, RULE_callArgument);
+		EnterRule(_localctx, 50, RULE_callArgument);
 		try {
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 415;
+			State = 433;
 			name();
-			State = 416;
+			State = 434;
 			Match(COLON);
-			State = 417;
+			State = 435;
 			expr(0);
 			}
 		}
@@ -2915,25 +3013,25 @@ internal partial class GMacDslParser : Parser {
 		int _parentState = State;
 		ExprContext _localctx = new ExprContext(Context, _parentState);
 		ExprContext _prevctx = _localctx;
-		int _startState = 50;
-		EnterRecursionRule(_localctx, 50, RULE_expr, _p);
+		int _startState = 52;
+		EnterRecursionRule(_localctx, 52, RULE_expr, _p);
 		int _la;
 		try {
 			int _alt;
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 455;
+			State = 473;
 			ErrorHandler.Sync(this);
-			switch ( Interpreter.AdaptivePredict(TokenStream,40,Context) ) {
+			switch ( Interpreter.AdaptivePredict(TokenStream,41,Context) ) {
 			case 1:
 				{
 				_localctx = new NegateExprContext(_localctx);
 				Context = _localctx;
 				_prevctx = _localctx;
 
-				State = 420;
+				State = 438;
 				Match(MINUS);
-				State = 421;
+				State = 439;
 				expr(12);
 				}
 				break;
@@ -2942,9 +3040,9 @@ internal partial class GMacDslParser : Parser {
 				_localctx = new PlusExprContext(_localctx);
 				Context = _localctx;
 				_prevctx = _localctx;
-				State = 422;
+				State = 440;
 				Match(PLUS);
-				State = 423;
+				State = 441;
 				expr(11);
 				}
 				break;
@@ -2953,11 +3051,11 @@ internal partial class GMacDslParser : Parser {
 				_localctx = new ParenExprContext(_localctx);
 				Context = _localctx;
 				_prevctx = _localctx;
-				State = 424;
+				State = 442;
 				Match(LPAREN);
-				State = 425;
+				State = 443;
 				expr(0);
-				State = 426;
+				State = 444;
 				Match(RPAREN);
 				}
 				break;
@@ -2966,7 +3064,7 @@ internal partial class GMacDslParser : Parser {
 				_localctx = new NumberExprContext(_localctx);
 				Context = _localctx;
 				_prevctx = _localctx;
-				State = 428;
+				State = 446;
 				number();
 				}
 				break;
@@ -2975,7 +3073,7 @@ internal partial class GMacDslParser : Parser {
 				_localctx = new MemberExprContext(_localctx);
 				Context = _localctx;
 				_prevctx = _localctx;
-				State = 429;
+				State = 447;
 				memberReference();
 				}
 				break;
@@ -2984,13 +3082,13 @@ internal partial class GMacDslParser : Parser {
 				_localctx = new MultivectorExprContext(_localctx);
 				Context = _localctx;
 				_prevctx = _localctx;
-				State = 430;
+				State = 448;
 				name();
-				State = 431;
+				State = 449;
 				Match(DOT);
-				State = 432;
+				State = 450;
 				Match(MULTIVECTOR);
-				State = 433;
+				State = 451;
 				coefficientList();
 				}
 				break;
@@ -2999,37 +3097,37 @@ internal partial class GMacDslParser : Parser {
 				_localctx = new CallExprContext(_localctx);
 				Context = _localctx;
 				_prevctx = _localctx;
-				State = 435;
+				State = 453;
 				qualifiedName();
-				State = 436;
+				State = 454;
 				Match(LPAREN);
-				State = 445;
+				State = 463;
 				ErrorHandler.Sync(this);
 				_la = TokenStream.LA(1);
 				if ((((_la) & ~0x3f) == 0 && ((1L << _la) & -9146810293437857808L) != 0) || ((((_la - 64)) & ~0x3f) == 0 && ((1L << (_la - 64)) & 113L) != 0)) {
 					{
-					State = 437;
+					State = 455;
 					expr(0);
-					State = 442;
+					State = 460;
 					ErrorHandler.Sync(this);
 					_la = TokenStream.LA(1);
 					while (_la==COMMA) {
 						{
 						{
-						State = 438;
+						State = 456;
 						Match(COMMA);
-						State = 439;
+						State = 457;
 						expr(0);
 						}
 						}
-						State = 444;
+						State = 462;
 						ErrorHandler.Sync(this);
 						_la = TokenStream.LA(1);
 					}
 					}
 				}
 
-				State = 447;
+				State = 465;
 				Match(RPAREN);
 				}
 				break;
@@ -3038,13 +3136,13 @@ internal partial class GMacDslParser : Parser {
 				_localctx = new TransformExprContext(_localctx);
 				Context = _localctx;
 				_prevctx = _localctx;
-				State = 449;
+				State = 467;
 				qualifiedName();
-				State = 450;
+				State = 468;
 				Match(LBRACKET);
-				State = 451;
+				State = 469;
 				expr(0);
-				State = 452;
+				State = 470;
 				Match(RBRACKET);
 				}
 				break;
@@ -3053,33 +3151,33 @@ internal partial class GMacDslParser : Parser {
 				_localctx = new NameExprContext(_localctx);
 				Context = _localctx;
 				_prevctx = _localctx;
-				State = 454;
+				State = 472;
 				qualifiedName();
 				}
 				break;
 			}
 			Context.Stop = TokenStream.LT(-1);
-			State = 477;
+			State = 495;
 			ErrorHandler.Sync(this);
-			_alt = Interpreter.AdaptivePredict(TokenStream,42,Context);
+			_alt = Interpreter.AdaptivePredict(TokenStream,43,Context);
 			while ( _alt!=2 && _alt!=global::Antlr4.Runtime.Atn.ATN.INVALID_ALT_NUMBER ) {
 				if ( _alt==1 ) {
 					if ( ParseListeners!=null )
 						TriggerExitRuleEvent();
 					_prevctx = _localctx;
 					{
-					State = 475;
+					State = 493;
 					ErrorHandler.Sync(this);
-					switch ( Interpreter.AdaptivePredict(TokenStream,41,Context) ) {
+					switch ( Interpreter.AdaptivePredict(TokenStream,42,Context) ) {
 					case 1:
 						{
 						_localctx = new PowerExprContext(new ExprContext(_parentctx, _parentState));
 						PushNewRecursionContext(_localctx, _startState, RULE_expr);
-						State = 457;
+						State = 475;
 						if (!(Precpred(Context, 13))) throw new FailedPredicateException(this, "Precpred(Context, 13)");
-						State = 458;
+						State = 476;
 						Match(CARET);
-						State = 459;
+						State = 477;
 						expr(13);
 						}
 						break;
@@ -3087,9 +3185,9 @@ internal partial class GMacDslParser : Parser {
 						{
 						_localctx = new ScaleExprContext(new ExprContext(_parentctx, _parentState));
 						PushNewRecursionContext(_localctx, _startState, RULE_expr);
-						State = 460;
+						State = 478;
 						if (!(Precpred(Context, 10))) throw new FailedPredicateException(this, "Precpred(Context, 10)");
-						State = 461;
+						State = 479;
 						((ScaleExprContext)_localctx).op = TokenStream.LT(1);
 						_la = TokenStream.LA(1);
 						if ( !(_la==STAR || _la==SLASH) ) {
@@ -3099,7 +3197,7 @@ internal partial class GMacDslParser : Parser {
 							ErrorHandler.ReportMatch(this);
 						    Consume();
 						}
-						State = 462;
+						State = 480;
 						expr(11);
 						}
 						break;
@@ -3107,9 +3205,9 @@ internal partial class GMacDslParser : Parser {
 						{
 						_localctx = new ProductExprContext(new ExprContext(_parentctx, _parentState));
 						PushNewRecursionContext(_localctx, _startState, RULE_expr);
-						State = 463;
+						State = 481;
 						if (!(Precpred(Context, 9))) throw new FailedPredicateException(this, "Precpred(Context, 9)");
-						State = 464;
+						State = 482;
 						((ProductExprContext)_localctx).op = TokenStream.LT(1);
 						_la = TokenStream.LA(1);
 						if ( !((((_la) & ~0x3f) == 0 && ((1L << _la) & 280925220896768L) != 0)) ) {
@@ -3119,7 +3217,7 @@ internal partial class GMacDslParser : Parser {
 							ErrorHandler.ReportMatch(this);
 						    Consume();
 						}
-						State = 465;
+						State = 483;
 						expr(10);
 						}
 						break;
@@ -3127,9 +3225,9 @@ internal partial class GMacDslParser : Parser {
 						{
 						_localctx = new SumExprContext(new ExprContext(_parentctx, _parentState));
 						PushNewRecursionContext(_localctx, _startState, RULE_expr);
-						State = 466;
+						State = 484;
 						if (!(Precpred(Context, 8))) throw new FailedPredicateException(this, "Precpred(Context, 8)");
-						State = 467;
+						State = 485;
 						((SumExprContext)_localctx).op = TokenStream.LT(1);
 						_la = TokenStream.LA(1);
 						if ( !(_la==PLUS || _la==MINUS) ) {
@@ -3139,7 +3237,7 @@ internal partial class GMacDslParser : Parser {
 							ErrorHandler.ReportMatch(this);
 						    Consume();
 						}
-						State = 468;
+						State = 486;
 						expr(9);
 						}
 						break;
@@ -3147,24 +3245,24 @@ internal partial class GMacDslParser : Parser {
 						{
 						_localctx = new CoefficientExprContext(new ExprContext(_parentctx, _parentState));
 						PushNewRecursionContext(_localctx, _startState, RULE_expr);
-						State = 469;
+						State = 487;
 						if (!(Precpred(Context, 14))) throw new FailedPredicateException(this, "Precpred(Context, 14)");
-						State = 470;
+						State = 488;
 						Match(DOT);
-						State = 471;
+						State = 489;
 						Match(LT);
-						State = 472;
+						State = 490;
 						bladeName();
-						State = 473;
+						State = 491;
 						Match(GT);
 						}
 						break;
 					}
 					} 
 				}
-				State = 479;
+				State = 497;
 				ErrorHandler.Sync(this);
-				_alt = Interpreter.AdaptivePredict(TokenStream,42,Context);
+				_alt = Interpreter.AdaptivePredict(TokenStream,43,Context);
 			}
 			}
 		}
@@ -3208,32 +3306,32 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public MemberReferenceContext memberReference() {
 		MemberReferenceContext _localctx = new MemberReferenceContext(Context, State);
-		EnterRule(_localctx, 52, RULE_memberReference);
+		EnterRule(_localctx, 54, RULE_memberReference);
 		int _la;
 		try {
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 480;
+			State = 498;
 			Match(LT);
-			State = 481;
+			State = 499;
 			name();
-			State = 486;
+			State = 504;
 			ErrorHandler.Sync(this);
 			_la = TokenStream.LA(1);
 			while (_la==DOT) {
 				{
 				{
-				State = 482;
+				State = 500;
 				Match(DOT);
-				State = 483;
+				State = 501;
 				name();
 				}
 				}
-				State = 488;
+				State = 506;
 				ErrorHandler.Sync(this);
 				_la = TokenStream.LA(1);
 			}
-			State = 489;
+			State = 507;
 			Match(GT);
 			}
 		}
@@ -3267,12 +3365,12 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public NumberContext number() {
 		NumberContext _localctx = new NumberContext(Context, State);
-		EnterRule(_localctx, 54, RULE_number);
+		EnterRule(_localctx, 56, RULE_number);
 		int _la;
 		try {
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 491;
+			State = 509;
 			_la = TokenStream.LA(1);
 			if ( !(_la==FLOAT || _la==INT) ) {
 			ErrorHandler.RecoverInline(this);
@@ -3321,30 +3419,30 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public QualifiedNameContext qualifiedName() {
 		QualifiedNameContext _localctx = new QualifiedNameContext(Context, State);
-		EnterRule(_localctx, 56, RULE_qualifiedName);
+		EnterRule(_localctx, 58, RULE_qualifiedName);
 		try {
 			int _alt;
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 493;
+			State = 511;
 			name();
-			State = 498;
+			State = 516;
 			ErrorHandler.Sync(this);
-			_alt = Interpreter.AdaptivePredict(TokenStream,44,Context);
+			_alt = Interpreter.AdaptivePredict(TokenStream,45,Context);
 			while ( _alt!=2 && _alt!=global::Antlr4.Runtime.Atn.ATN.INVALID_ALT_NUMBER ) {
 				if ( _alt==1 ) {
 					{
 					{
-					State = 494;
+					State = 512;
 					Match(DOT);
-					State = 495;
+					State = 513;
 					name();
 					}
 					} 
 				}
-				State = 500;
+				State = 518;
 				ErrorHandler.Sync(this);
-				_alt = Interpreter.AdaptivePredict(TokenStream,44,Context);
+				_alt = Interpreter.AdaptivePredict(TokenStream,45,Context);
 			}
 			}
 		}
@@ -3411,12 +3509,12 @@ internal partial class GMacDslParser : Parser {
 	[RuleVersion(0)]
 	public NameContext name() {
 		NameContext _localctx = new NameContext(Context, State);
-		EnterRule(_localctx, 58, RULE_name);
+		EnterRule(_localctx, 60, RULE_name);
 		int _la;
 		try {
 			EnterOuterAlt(_localctx, 1);
 			{
-			State = 501;
+			State = 519;
 			_la = TokenStream.LA(1);
 			if ( !((((_la) & ~0x3f) == 0 && ((1L << _la) & 549751619568L) != 0) || _la==ID) ) {
 			ErrorHandler.RecoverInline(this);
@@ -3440,7 +3538,7 @@ internal partial class GMacDslParser : Parser {
 
 	public override bool Sempred(RuleContext _localctx, int ruleIndex, int predIndex) {
 		switch (ruleIndex) {
-		case 25: return expr_sempred((ExprContext)_localctx, predIndex);
+		case 26: return expr_sempred((ExprContext)_localctx, predIndex);
 		}
 		return true;
 	}
@@ -3456,175 +3554,180 @@ internal partial class GMacDslParser : Parser {
 	}
 
 	private static int[] _serializedATN = {
-		4,1,74,504,2,0,7,0,2,1,7,1,2,2,7,2,2,3,7,3,2,4,7,4,2,5,7,5,2,6,7,6,2,7,
+		4,1,74,522,2,0,7,0,2,1,7,1,2,2,7,2,2,3,7,3,2,4,7,4,2,5,7,5,2,6,7,6,2,7,
 		7,7,2,8,7,8,2,9,7,9,2,10,7,10,2,11,7,11,2,12,7,12,2,13,7,13,2,14,7,14,
 		2,15,7,15,2,16,7,16,2,17,7,17,2,18,7,18,2,19,7,19,2,20,7,20,2,21,7,21,
 		2,22,7,22,2,23,7,23,2,24,7,24,2,25,7,25,2,26,7,26,2,27,7,27,2,28,7,28,
-		2,29,7,29,1,0,5,0,62,8,0,10,0,12,0,65,9,0,1,0,1,0,1,1,1,1,1,1,1,1,1,1,
-		1,1,1,1,3,1,76,8,1,1,2,1,2,1,2,1,2,1,2,1,2,1,2,1,2,1,2,1,3,1,3,3,3,89,
-		8,3,1,3,1,3,1,3,1,3,5,3,95,8,3,10,3,12,3,98,9,3,1,3,1,3,1,4,1,4,1,4,1,
-		4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,
-		1,4,1,4,3,4,125,8,4,1,4,1,4,3,4,129,8,4,1,5,1,5,1,5,1,5,5,5,135,8,5,10,
-		5,12,5,138,9,5,1,5,1,5,1,6,1,6,1,6,1,6,5,6,146,8,6,10,6,12,6,149,9,6,1,
-		6,1,6,1,7,1,7,1,7,1,7,1,7,1,7,1,7,1,7,1,7,1,7,1,7,1,7,1,8,1,8,1,8,1,8,
-		1,8,1,8,1,8,1,8,1,8,1,8,1,8,1,8,1,8,1,8,1,8,1,8,1,8,1,8,1,8,1,8,1,8,1,
-		8,1,8,3,8,188,8,8,1,9,1,9,1,9,1,9,1,9,1,9,1,9,1,9,1,10,1,10,1,10,1,10,
-		1,10,5,10,203,8,10,10,10,12,10,206,9,10,1,10,1,10,1,10,1,10,1,10,1,10,
-		1,10,5,10,215,8,10,10,10,12,10,218,9,10,1,10,1,10,3,10,222,8,10,1,11,1,
-		11,3,11,226,8,11,1,11,1,11,1,11,1,11,1,11,1,11,1,11,5,11,235,8,11,10,11,
-		12,11,238,9,11,1,11,3,11,241,8,11,1,11,1,11,1,11,1,11,1,12,1,12,1,12,1,
-		12,1,12,1,12,3,12,253,8,12,1,13,1,13,1,13,1,13,1,13,1,13,1,13,1,13,1,13,
-		1,14,1,14,1,14,1,14,5,14,268,8,14,10,14,12,14,271,9,14,1,14,3,14,274,8,
-		14,3,14,276,8,14,1,14,1,14,1,15,1,15,1,15,1,15,1,16,1,16,1,16,1,16,5,16,
-		288,8,16,10,16,12,16,291,9,16,3,16,293,8,16,1,17,1,17,1,17,1,17,1,17,1,
-		17,1,17,1,17,1,17,1,17,5,17,305,8,17,10,17,12,17,308,9,17,1,17,1,17,1,
-		17,1,18,1,18,1,18,1,18,1,18,5,18,318,8,18,10,18,12,18,321,9,18,1,18,3,
-		18,324,8,18,3,18,326,8,18,1,18,1,18,1,19,1,19,3,19,332,8,19,1,19,1,19,
-		1,19,1,20,1,20,1,20,1,20,1,20,1,20,1,20,1,20,1,20,1,20,1,20,1,20,1,20,
-		5,20,350,8,20,10,20,12,20,353,9,20,1,20,1,20,1,20,1,21,1,21,1,21,1,21,
-		5,21,362,8,21,10,21,12,21,365,9,21,1,21,3,21,368,8,21,3,21,370,8,21,1,
-		21,1,21,1,22,1,22,1,22,1,22,1,23,1,23,1,23,1,23,3,23,382,8,23,1,23,1,23,
-		1,23,1,23,1,23,1,23,5,23,390,8,23,10,23,12,23,393,9,23,1,23,3,23,396,8,
-		23,3,23,398,8,23,1,23,1,23,3,23,402,8,23,1,23,1,23,3,23,406,8,23,1,23,
-		1,23,1,23,3,23,411,8,23,1,23,3,23,414,8,23,1,24,1,24,1,24,1,24,1,25,1,
-		25,1,25,1,25,1,25,1,25,1,25,1,25,1,25,1,25,1,25,1,25,1,25,1,25,1,25,1,
-		25,1,25,1,25,1,25,1,25,1,25,5,25,441,8,25,10,25,12,25,444,9,25,3,25,446,
-		8,25,1,25,1,25,1,25,1,25,1,25,1,25,1,25,1,25,3,25,456,8,25,1,25,1,25,1,
-		25,1,25,1,25,1,25,1,25,1,25,1,25,1,25,1,25,1,25,1,25,1,25,1,25,1,25,1,
-		25,1,25,5,25,476,8,25,10,25,12,25,479,9,25,1,26,1,26,1,26,1,26,5,26,485,
-		8,26,10,26,12,26,488,9,26,1,26,1,26,1,27,1,27,1,28,1,28,1,28,5,28,497,
-		8,28,10,28,12,28,500,9,28,1,29,1,29,1,29,0,1,50,30,0,2,4,6,8,10,12,14,
-		16,18,20,22,24,26,28,30,32,34,36,38,40,42,44,46,48,50,52,54,56,58,0,8,
-		1,0,29,30,2,0,3,3,58,58,1,0,37,38,1,0,65,66,1,0,39,47,1,0,63,64,1,0,68,
-		69,3,0,4,21,23,38,70,70,546,0,63,1,0,0,0,2,75,1,0,0,0,4,77,1,0,0,0,6,86,
-		1,0,0,0,8,128,1,0,0,0,10,130,1,0,0,0,12,141,1,0,0,0,14,152,1,0,0,0,16,
-		187,1,0,0,0,18,189,1,0,0,0,20,221,1,0,0,0,22,223,1,0,0,0,24,252,1,0,0,
-		0,26,254,1,0,0,0,28,263,1,0,0,0,30,279,1,0,0,0,32,292,1,0,0,0,34,294,1,
-		0,0,0,36,312,1,0,0,0,38,331,1,0,0,0,40,336,1,0,0,0,42,357,1,0,0,0,44,373,
-		1,0,0,0,46,413,1,0,0,0,48,415,1,0,0,0,50,455,1,0,0,0,52,480,1,0,0,0,54,
-		491,1,0,0,0,56,493,1,0,0,0,58,501,1,0,0,0,60,62,3,2,1,0,61,60,1,0,0,0,
-		62,65,1,0,0,0,63,61,1,0,0,0,63,64,1,0,0,0,64,66,1,0,0,0,65,63,1,0,0,0,
-		66,67,5,0,0,1,67,1,1,0,0,0,68,76,3,4,2,0,69,76,3,14,7,0,70,76,3,18,9,0,
-		71,76,3,22,11,0,72,76,3,26,13,0,73,76,3,34,17,0,74,76,3,40,20,0,75,68,
-		1,0,0,0,75,69,1,0,0,0,75,70,1,0,0,0,75,71,1,0,0,0,75,72,1,0,0,0,75,73,
-		1,0,0,0,75,74,1,0,0,0,76,3,1,0,0,0,77,78,5,1,0,0,78,79,5,4,0,0,79,80,3,
-		58,29,0,80,81,5,3,0,0,81,82,3,6,3,0,82,83,3,8,4,0,83,84,5,2,0,0,84,85,
-		5,4,0,0,85,5,1,0,0,0,86,88,5,5,0,0,87,89,5,58,0,0,88,87,1,0,0,0,88,89,
-		1,0,0,0,89,90,1,0,0,0,90,91,5,50,0,0,91,96,3,58,29,0,92,93,5,60,0,0,93,
-		95,3,58,29,0,94,92,1,0,0,0,95,98,1,0,0,0,96,94,1,0,0,0,96,97,1,0,0,0,97,
-		99,1,0,0,0,98,96,1,0,0,0,99,100,5,51,0,0,100,7,1,0,0,0,101,129,5,6,0,0,
-		102,103,5,7,0,0,103,104,5,8,0,0,104,129,3,58,29,0,105,106,5,9,0,0,106,
-		129,3,58,29,0,107,108,5,10,0,0,108,109,5,62,0,0,109,129,3,10,5,0,110,111,
-		5,11,0,0,111,112,3,58,29,0,112,113,5,12,0,0,113,114,5,13,0,0,114,115,5,
-		62,0,0,115,116,3,10,5,0,116,129,1,0,0,0,117,118,5,14,0,0,118,119,5,52,
-		0,0,119,120,3,50,25,0,120,121,5,60,0,0,121,124,3,50,25,0,122,123,5,60,
-		0,0,123,125,3,50,25,0,124,122,1,0,0,0,124,125,1,0,0,0,125,126,1,0,0,0,
-		126,127,5,53,0,0,127,129,1,0,0,0,128,101,1,0,0,0,128,102,1,0,0,0,128,105,
-		1,0,0,0,128,107,1,0,0,0,128,110,1,0,0,0,128,117,1,0,0,0,129,9,1,0,0,0,
-		130,131,5,50,0,0,131,136,3,12,6,0,132,133,5,60,0,0,133,135,3,12,6,0,134,
-		132,1,0,0,0,135,138,1,0,0,0,136,134,1,0,0,0,136,137,1,0,0,0,137,139,1,
-		0,0,0,138,136,1,0,0,0,139,140,5,51,0,0,140,11,1,0,0,0,141,142,5,50,0,0,
-		142,147,3,50,25,0,143,144,5,60,0,0,144,146,3,50,25,0,145,143,1,0,0,0,146,
-		149,1,0,0,0,147,145,1,0,0,0,147,148,1,0,0,0,148,150,1,0,0,0,149,147,1,
-		0,0,0,150,151,5,51,0,0,151,13,1,0,0,0,152,153,5,1,0,0,153,154,5,11,0,0,
-		154,155,3,58,29,0,155,156,5,58,0,0,156,157,3,58,29,0,157,158,5,49,0,0,
-		158,159,3,58,29,0,159,160,5,3,0,0,160,161,3,16,8,0,161,162,5,2,0,0,162,
-		163,5,11,0,0,163,15,1,0,0,0,164,188,5,15,0,0,165,166,5,16,0,0,166,167,
-		5,8,0,0,167,188,3,58,29,0,168,169,5,17,0,0,169,170,5,8,0,0,170,188,3,58,
-		29,0,171,172,5,18,0,0,172,173,5,8,0,0,173,188,3,58,29,0,174,175,5,17,0,
-		0,175,176,5,18,0,0,176,177,5,8,0,0,177,188,3,58,29,0,178,179,5,19,0,0,
-		179,180,5,20,0,0,180,181,3,58,29,0,181,182,5,61,0,0,182,183,5,13,0,0,183,
-		188,1,0,0,0,184,185,5,19,0,0,185,186,5,20,0,0,186,188,3,10,5,0,187,164,
-		1,0,0,0,187,165,1,0,0,0,187,168,1,0,0,0,187,171,1,0,0,0,187,174,1,0,0,
-		0,187,178,1,0,0,0,187,184,1,0,0,0,188,17,1,0,0,0,189,190,5,1,0,0,190,191,
-		5,7,0,0,191,192,3,56,28,0,192,193,5,3,0,0,193,194,3,20,10,0,194,195,5,
-		2,0,0,195,196,5,7,0,0,196,19,1,0,0,0,197,198,5,5,0,0,198,199,5,50,0,0,
-		199,204,3,32,16,0,200,201,5,60,0,0,201,203,3,32,16,0,202,200,1,0,0,0,203,
-		206,1,0,0,0,204,202,1,0,0,0,204,205,1,0,0,0,205,207,1,0,0,0,206,204,1,
-		0,0,0,207,208,5,51,0,0,208,222,1,0,0,0,209,210,5,21,0,0,210,211,5,50,0,
-		0,211,216,3,58,29,0,212,213,5,60,0,0,213,215,3,58,29,0,214,212,1,0,0,0,
-		215,218,1,0,0,0,216,214,1,0,0,0,216,217,1,0,0,0,217,219,1,0,0,0,218,216,
-		1,0,0,0,219,220,5,51,0,0,220,222,1,0,0,0,221,197,1,0,0,0,221,209,1,0,0,
-		0,222,21,1,0,0,0,223,225,5,1,0,0,224,226,5,24,0,0,225,224,1,0,0,0,225,
-		226,1,0,0,0,226,227,1,0,0,0,227,228,5,22,0,0,228,229,5,23,0,0,229,230,
-		3,56,28,0,230,231,5,3,0,0,231,236,3,24,12,0,232,233,5,59,0,0,233,235,3,
-		24,12,0,234,232,1,0,0,0,235,238,1,0,0,0,236,234,1,0,0,0,236,237,1,0,0,
-		0,237,240,1,0,0,0,238,236,1,0,0,0,239,241,5,59,0,0,240,239,1,0,0,0,240,
-		241,1,0,0,0,241,242,1,0,0,0,242,243,5,2,0,0,243,244,5,22,0,0,244,245,5,
-		23,0,0,245,23,1,0,0,0,246,253,5,24,0,0,247,248,3,32,16,0,248,249,5,58,
-		0,0,249,250,3,50,25,0,250,253,1,0,0,0,251,253,3,56,28,0,252,246,1,0,0,
-		0,252,247,1,0,0,0,252,251,1,0,0,0,253,25,1,0,0,0,254,255,5,1,0,0,255,256,
-		5,25,0,0,256,257,3,56,28,0,257,258,5,3,0,0,258,259,5,22,0,0,259,260,3,
-		28,14,0,260,261,5,2,0,0,261,262,5,25,0,0,262,27,1,0,0,0,263,275,5,50,0,
-		0,264,269,3,30,15,0,265,266,5,59,0,0,266,268,3,30,15,0,267,265,1,0,0,0,
-		268,271,1,0,0,0,269,267,1,0,0,0,269,270,1,0,0,0,270,273,1,0,0,0,271,269,
-		1,0,0,0,272,274,5,59,0,0,273,272,1,0,0,0,273,274,1,0,0,0,274,276,1,0,0,
-		0,275,264,1,0,0,0,275,276,1,0,0,0,276,277,1,0,0,0,277,278,5,51,0,0,278,
-		29,1,0,0,0,279,280,3,32,16,0,280,281,5,58,0,0,281,282,3,50,25,0,282,31,
-		1,0,0,0,283,293,5,69,0,0,284,289,3,58,29,0,285,286,5,67,0,0,286,288,3,
-		58,29,0,287,285,1,0,0,0,288,291,1,0,0,0,289,287,1,0,0,0,289,290,1,0,0,
-		0,290,293,1,0,0,0,291,289,1,0,0,0,292,283,1,0,0,0,292,284,1,0,0,0,293,
-		33,1,0,0,0,294,295,5,1,0,0,295,296,5,26,0,0,296,297,3,58,29,0,297,298,
-		5,3,0,0,298,299,5,27,0,0,299,300,5,4,0,0,300,301,3,58,29,0,301,302,5,28,
-		0,0,302,306,3,28,14,0,303,305,3,36,18,0,304,303,1,0,0,0,305,308,1,0,0,
-		0,306,304,1,0,0,0,306,307,1,0,0,0,307,309,1,0,0,0,308,306,1,0,0,0,309,
-		310,5,2,0,0,310,311,5,26,0,0,311,35,1,0,0,0,312,313,7,0,0,0,313,325,5,
-		50,0,0,314,319,3,38,19,0,315,316,5,59,0,0,316,318,3,38,19,0,317,315,1,
-		0,0,0,318,321,1,0,0,0,319,317,1,0,0,0,319,320,1,0,0,0,320,323,1,0,0,0,
-		321,319,1,0,0,0,322,324,5,59,0,0,323,322,1,0,0,0,323,324,1,0,0,0,324,326,
-		1,0,0,0,325,314,1,0,0,0,325,326,1,0,0,0,326,327,1,0,0,0,327,328,5,51,0,
-		0,328,37,1,0,0,0,329,332,3,52,26,0,330,332,3,58,29,0,331,329,1,0,0,0,331,
-		330,1,0,0,0,332,333,1,0,0,0,333,334,5,58,0,0,334,335,3,50,25,0,335,39,
-		1,0,0,0,336,337,5,1,0,0,337,338,5,31,0,0,338,339,3,58,29,0,339,340,5,3,
-		0,0,340,341,5,32,0,0,341,342,5,58,0,0,342,343,3,42,21,0,343,344,5,33,0,
-		0,344,345,5,58,0,0,345,346,3,42,21,0,346,347,5,34,0,0,347,351,5,58,0,0,
-		348,350,3,46,23,0,349,348,1,0,0,0,350,353,1,0,0,0,351,349,1,0,0,0,351,
-		352,1,0,0,0,352,354,1,0,0,0,353,351,1,0,0,0,354,355,5,2,0,0,355,356,5,
-		31,0,0,356,41,1,0,0,0,357,369,5,50,0,0,358,363,3,44,22,0,359,360,5,59,
-		0,0,360,362,3,44,22,0,361,359,1,0,0,0,362,365,1,0,0,0,363,361,1,0,0,0,
-		363,364,1,0,0,0,364,367,1,0,0,0,365,363,1,0,0,0,366,368,5,59,0,0,367,366,
-		1,0,0,0,367,368,1,0,0,0,368,370,1,0,0,0,369,358,1,0,0,0,369,370,1,0,0,
-		0,370,371,1,0,0,0,371,372,5,51,0,0,372,43,1,0,0,0,373,374,3,58,29,0,374,
-		375,7,1,0,0,375,376,3,56,28,0,376,45,1,0,0,0,377,378,3,58,29,0,378,379,
-		5,62,0,0,379,381,3,50,25,0,380,382,5,59,0,0,381,380,1,0,0,0,381,382,1,
-		0,0,0,382,414,1,0,0,0,383,384,5,35,0,0,384,385,3,58,29,0,385,397,5,50,
-		0,0,386,391,3,48,24,0,387,388,5,59,0,0,388,390,3,48,24,0,389,387,1,0,0,
-		0,390,393,1,0,0,0,391,389,1,0,0,0,391,392,1,0,0,0,392,395,1,0,0,0,393,
-		391,1,0,0,0,394,396,5,59,0,0,395,394,1,0,0,0,395,396,1,0,0,0,396,398,1,
-		0,0,0,397,386,1,0,0,0,397,398,1,0,0,0,398,399,1,0,0,0,399,401,5,51,0,0,
-		400,402,5,59,0,0,401,400,1,0,0,0,401,402,1,0,0,0,402,414,1,0,0,0,403,405,
-		5,48,0,0,404,406,5,59,0,0,405,404,1,0,0,0,405,406,1,0,0,0,406,414,1,0,
-		0,0,407,408,5,36,0,0,408,410,7,2,0,0,409,411,5,59,0,0,410,409,1,0,0,0,
-		410,411,1,0,0,0,411,414,1,0,0,0,412,414,5,59,0,0,413,377,1,0,0,0,413,383,
-		1,0,0,0,413,403,1,0,0,0,413,407,1,0,0,0,413,412,1,0,0,0,414,47,1,0,0,0,
-		415,416,3,58,29,0,416,417,5,58,0,0,417,418,3,50,25,0,418,49,1,0,0,0,419,
-		420,6,25,-1,0,420,421,5,64,0,0,421,456,3,50,25,12,422,423,5,63,0,0,423,
-		456,3,50,25,11,424,425,5,52,0,0,425,426,3,50,25,0,426,427,5,53,0,0,427,
-		456,1,0,0,0,428,456,3,54,27,0,429,456,3,52,26,0,430,431,3,58,29,0,431,
-		432,5,61,0,0,432,433,5,22,0,0,433,434,3,28,14,0,434,456,1,0,0,0,435,436,
-		3,56,28,0,436,445,5,52,0,0,437,442,3,50,25,0,438,439,5,60,0,0,439,441,
-		3,50,25,0,440,438,1,0,0,0,441,444,1,0,0,0,442,440,1,0,0,0,442,443,1,0,
-		0,0,443,446,1,0,0,0,444,442,1,0,0,0,445,437,1,0,0,0,445,446,1,0,0,0,446,
-		447,1,0,0,0,447,448,5,53,0,0,448,456,1,0,0,0,449,450,3,56,28,0,450,451,
-		5,54,0,0,451,452,3,50,25,0,452,453,5,55,0,0,453,456,1,0,0,0,454,456,3,
-		56,28,0,455,419,1,0,0,0,455,422,1,0,0,0,455,424,1,0,0,0,455,428,1,0,0,
-		0,455,429,1,0,0,0,455,430,1,0,0,0,455,435,1,0,0,0,455,449,1,0,0,0,455,
-		454,1,0,0,0,456,477,1,0,0,0,457,458,10,13,0,0,458,459,5,67,0,0,459,476,
-		3,50,25,13,460,461,10,10,0,0,461,462,7,3,0,0,462,476,3,50,25,11,463,464,
-		10,9,0,0,464,465,7,4,0,0,465,476,3,50,25,10,466,467,10,8,0,0,467,468,7,
-		5,0,0,468,476,3,50,25,9,469,470,10,14,0,0,470,471,5,61,0,0,471,472,5,56,
-		0,0,472,473,3,32,16,0,473,474,5,57,0,0,474,476,1,0,0,0,475,457,1,0,0,0,
-		475,460,1,0,0,0,475,463,1,0,0,0,475,466,1,0,0,0,475,469,1,0,0,0,476,479,
-		1,0,0,0,477,475,1,0,0,0,477,478,1,0,0,0,478,51,1,0,0,0,479,477,1,0,0,0,
-		480,481,5,56,0,0,481,486,3,58,29,0,482,483,5,61,0,0,483,485,3,58,29,0,
-		484,482,1,0,0,0,485,488,1,0,0,0,486,484,1,0,0,0,486,487,1,0,0,0,487,489,
-		1,0,0,0,488,486,1,0,0,0,489,490,5,57,0,0,490,53,1,0,0,0,491,492,7,6,0,
-		0,492,55,1,0,0,0,493,498,3,58,29,0,494,495,5,61,0,0,495,497,3,58,29,0,
-		496,494,1,0,0,0,497,500,1,0,0,0,498,496,1,0,0,0,498,499,1,0,0,0,499,57,
-		1,0,0,0,500,498,1,0,0,0,501,502,7,7,0,0,502,59,1,0,0,0,45,63,75,88,96,
-		124,128,136,147,187,204,216,221,225,236,240,252,269,273,275,289,292,306,
-		319,323,325,331,351,363,367,369,381,391,395,397,401,405,410,413,442,445,
-		455,475,477,486,498
+		2,29,7,29,2,30,7,30,1,0,5,0,64,8,0,10,0,12,0,67,9,0,1,0,1,0,1,1,1,1,1,
+		1,1,1,1,1,1,1,1,1,3,1,78,8,1,1,2,1,2,1,2,1,2,1,2,1,2,1,2,1,2,1,2,1,3,1,
+		3,3,3,91,8,3,1,3,1,3,1,3,1,3,5,3,97,8,3,10,3,12,3,100,9,3,1,3,1,3,1,4,
+		1,4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,1,
+		4,1,4,1,4,1,4,1,4,3,4,127,8,4,1,4,1,4,1,4,1,4,1,4,1,4,1,4,5,4,136,8,4,
+		10,4,12,4,139,9,4,1,4,1,4,3,4,143,8,4,1,5,1,5,1,5,1,5,1,6,1,6,1,6,1,6,
+		5,6,153,8,6,10,6,12,6,156,9,6,1,6,1,6,1,7,1,7,1,7,1,7,5,7,164,8,7,10,7,
+		12,7,167,9,7,1,7,1,7,1,8,1,8,1,8,1,8,1,8,1,8,1,8,1,8,1,8,1,8,1,8,1,8,1,
+		9,1,9,1,9,1,9,1,9,1,9,1,9,1,9,1,9,1,9,1,9,1,9,1,9,1,9,1,9,1,9,1,9,1,9,
+		1,9,1,9,1,9,1,9,1,9,3,9,206,8,9,1,10,1,10,1,10,1,10,1,10,1,10,1,10,1,10,
+		1,11,1,11,1,11,1,11,1,11,5,11,221,8,11,10,11,12,11,224,9,11,1,11,1,11,
+		1,11,1,11,1,11,1,11,1,11,5,11,233,8,11,10,11,12,11,236,9,11,1,11,1,11,
+		3,11,240,8,11,1,12,1,12,3,12,244,8,12,1,12,1,12,1,12,1,12,1,12,1,12,1,
+		12,5,12,253,8,12,10,12,12,12,256,9,12,1,12,3,12,259,8,12,1,12,1,12,1,12,
+		1,12,1,13,1,13,1,13,1,13,1,13,1,13,3,13,271,8,13,1,14,1,14,1,14,1,14,1,
+		14,1,14,1,14,1,14,1,14,1,15,1,15,1,15,1,15,5,15,286,8,15,10,15,12,15,289,
+		9,15,1,15,3,15,292,8,15,3,15,294,8,15,1,15,1,15,1,16,1,16,1,16,1,16,1,
+		17,1,17,1,17,1,17,5,17,306,8,17,10,17,12,17,309,9,17,3,17,311,8,17,1,18,
+		1,18,1,18,1,18,1,18,1,18,1,18,1,18,1,18,1,18,5,18,323,8,18,10,18,12,18,
+		326,9,18,1,18,1,18,1,18,1,19,1,19,1,19,1,19,1,19,5,19,336,8,19,10,19,12,
+		19,339,9,19,1,19,3,19,342,8,19,3,19,344,8,19,1,19,1,19,1,20,1,20,3,20,
+		350,8,20,1,20,1,20,1,20,1,21,1,21,1,21,1,21,1,21,1,21,1,21,1,21,1,21,1,
+		21,1,21,1,21,1,21,5,21,368,8,21,10,21,12,21,371,9,21,1,21,1,21,1,21,1,
+		22,1,22,1,22,1,22,5,22,380,8,22,10,22,12,22,383,9,22,1,22,3,22,386,8,22,
+		3,22,388,8,22,1,22,1,22,1,23,1,23,1,23,1,23,1,24,1,24,1,24,1,24,3,24,400,
+		8,24,1,24,1,24,1,24,1,24,1,24,1,24,5,24,408,8,24,10,24,12,24,411,9,24,
+		1,24,3,24,414,8,24,3,24,416,8,24,1,24,1,24,3,24,420,8,24,1,24,1,24,3,24,
+		424,8,24,1,24,1,24,1,24,3,24,429,8,24,1,24,3,24,432,8,24,1,25,1,25,1,25,
+		1,25,1,26,1,26,1,26,1,26,1,26,1,26,1,26,1,26,1,26,1,26,1,26,1,26,1,26,
+		1,26,1,26,1,26,1,26,1,26,1,26,1,26,1,26,5,26,459,8,26,10,26,12,26,462,
+		9,26,3,26,464,8,26,1,26,1,26,1,26,1,26,1,26,1,26,1,26,1,26,3,26,474,8,
+		26,1,26,1,26,1,26,1,26,1,26,1,26,1,26,1,26,1,26,1,26,1,26,1,26,1,26,1,
+		26,1,26,1,26,1,26,1,26,5,26,494,8,26,10,26,12,26,497,9,26,1,27,1,27,1,
+		27,1,27,5,27,503,8,27,10,27,12,27,506,9,27,1,27,1,27,1,28,1,28,1,29,1,
+		29,1,29,5,29,515,8,29,10,29,12,29,518,9,29,1,30,1,30,1,30,0,1,52,31,0,
+		2,4,6,8,10,12,14,16,18,20,22,24,26,28,30,32,34,36,38,40,42,44,46,48,50,
+		52,54,56,58,60,0,8,1,0,29,30,2,0,3,3,58,58,1,0,37,38,1,0,65,66,1,0,39,
+		47,1,0,63,64,1,0,68,69,3,0,4,21,23,38,70,70,565,0,65,1,0,0,0,2,77,1,0,
+		0,0,4,79,1,0,0,0,6,88,1,0,0,0,8,142,1,0,0,0,10,144,1,0,0,0,12,148,1,0,
+		0,0,14,159,1,0,0,0,16,170,1,0,0,0,18,205,1,0,0,0,20,207,1,0,0,0,22,239,
+		1,0,0,0,24,241,1,0,0,0,26,270,1,0,0,0,28,272,1,0,0,0,30,281,1,0,0,0,32,
+		297,1,0,0,0,34,310,1,0,0,0,36,312,1,0,0,0,38,330,1,0,0,0,40,349,1,0,0,
+		0,42,354,1,0,0,0,44,375,1,0,0,0,46,391,1,0,0,0,48,431,1,0,0,0,50,433,1,
+		0,0,0,52,473,1,0,0,0,54,498,1,0,0,0,56,509,1,0,0,0,58,511,1,0,0,0,60,519,
+		1,0,0,0,62,64,3,2,1,0,63,62,1,0,0,0,64,67,1,0,0,0,65,63,1,0,0,0,65,66,
+		1,0,0,0,66,68,1,0,0,0,67,65,1,0,0,0,68,69,5,0,0,1,69,1,1,0,0,0,70,78,3,
+		4,2,0,71,78,3,16,8,0,72,78,3,20,10,0,73,78,3,24,12,0,74,78,3,28,14,0,75,
+		78,3,36,18,0,76,78,3,42,21,0,77,70,1,0,0,0,77,71,1,0,0,0,77,72,1,0,0,0,
+		77,73,1,0,0,0,77,74,1,0,0,0,77,75,1,0,0,0,77,76,1,0,0,0,78,3,1,0,0,0,79,
+		80,5,1,0,0,80,81,5,4,0,0,81,82,3,60,30,0,82,83,5,3,0,0,83,84,3,6,3,0,84,
+		85,3,8,4,0,85,86,5,2,0,0,86,87,5,4,0,0,87,5,1,0,0,0,88,90,5,5,0,0,89,91,
+		5,58,0,0,90,89,1,0,0,0,90,91,1,0,0,0,91,92,1,0,0,0,92,93,5,50,0,0,93,98,
+		3,60,30,0,94,95,5,60,0,0,95,97,3,60,30,0,96,94,1,0,0,0,97,100,1,0,0,0,
+		98,96,1,0,0,0,98,99,1,0,0,0,99,101,1,0,0,0,100,98,1,0,0,0,101,102,5,51,
+		0,0,102,7,1,0,0,0,103,143,5,6,0,0,104,105,5,7,0,0,105,106,5,8,0,0,106,
+		143,3,60,30,0,107,108,5,9,0,0,108,143,3,60,30,0,109,110,5,10,0,0,110,111,
+		5,62,0,0,111,143,3,12,6,0,112,113,5,11,0,0,113,114,3,60,30,0,114,115,5,
+		12,0,0,115,116,5,13,0,0,116,117,5,62,0,0,117,118,3,12,6,0,118,143,1,0,
+		0,0,119,120,5,14,0,0,120,121,5,52,0,0,121,122,3,52,26,0,122,123,5,60,0,
+		0,123,126,3,52,26,0,124,125,5,60,0,0,125,127,3,52,26,0,126,124,1,0,0,0,
+		126,127,1,0,0,0,127,128,1,0,0,0,128,129,5,53,0,0,129,143,1,0,0,0,130,131,
+		5,14,0,0,131,132,5,50,0,0,132,137,3,10,5,0,133,134,5,60,0,0,134,136,3,
+		10,5,0,135,133,1,0,0,0,136,139,1,0,0,0,137,135,1,0,0,0,137,138,1,0,0,0,
+		138,140,1,0,0,0,139,137,1,0,0,0,140,141,5,51,0,0,141,143,1,0,0,0,142,103,
+		1,0,0,0,142,104,1,0,0,0,142,107,1,0,0,0,142,109,1,0,0,0,142,112,1,0,0,
+		0,142,119,1,0,0,0,142,130,1,0,0,0,143,9,1,0,0,0,144,145,3,60,30,0,145,
+		146,5,58,0,0,146,147,3,52,26,0,147,11,1,0,0,0,148,149,5,50,0,0,149,154,
+		3,14,7,0,150,151,5,60,0,0,151,153,3,14,7,0,152,150,1,0,0,0,153,156,1,0,
+		0,0,154,152,1,0,0,0,154,155,1,0,0,0,155,157,1,0,0,0,156,154,1,0,0,0,157,
+		158,5,51,0,0,158,13,1,0,0,0,159,160,5,50,0,0,160,165,3,52,26,0,161,162,
+		5,60,0,0,162,164,3,52,26,0,163,161,1,0,0,0,164,167,1,0,0,0,165,163,1,0,
+		0,0,165,166,1,0,0,0,166,168,1,0,0,0,167,165,1,0,0,0,168,169,5,51,0,0,169,
+		15,1,0,0,0,170,171,5,1,0,0,171,172,5,11,0,0,172,173,3,60,30,0,173,174,
+		5,58,0,0,174,175,3,60,30,0,175,176,5,49,0,0,176,177,3,60,30,0,177,178,
+		5,3,0,0,178,179,3,18,9,0,179,180,5,2,0,0,180,181,5,11,0,0,181,17,1,0,0,
+		0,182,206,5,15,0,0,183,184,5,16,0,0,184,185,5,8,0,0,185,206,3,60,30,0,
+		186,187,5,17,0,0,187,188,5,8,0,0,188,206,3,60,30,0,189,190,5,18,0,0,190,
+		191,5,8,0,0,191,206,3,60,30,0,192,193,5,17,0,0,193,194,5,18,0,0,194,195,
+		5,8,0,0,195,206,3,60,30,0,196,197,5,19,0,0,197,198,5,20,0,0,198,199,3,
+		60,30,0,199,200,5,61,0,0,200,201,5,13,0,0,201,206,1,0,0,0,202,203,5,19,
+		0,0,203,204,5,20,0,0,204,206,3,12,6,0,205,182,1,0,0,0,205,183,1,0,0,0,
+		205,186,1,0,0,0,205,189,1,0,0,0,205,192,1,0,0,0,205,196,1,0,0,0,205,202,
+		1,0,0,0,206,19,1,0,0,0,207,208,5,1,0,0,208,209,5,7,0,0,209,210,3,58,29,
+		0,210,211,5,3,0,0,211,212,3,22,11,0,212,213,5,2,0,0,213,214,5,7,0,0,214,
+		21,1,0,0,0,215,216,5,5,0,0,216,217,5,50,0,0,217,222,3,34,17,0,218,219,
+		5,60,0,0,219,221,3,34,17,0,220,218,1,0,0,0,221,224,1,0,0,0,222,220,1,0,
+		0,0,222,223,1,0,0,0,223,225,1,0,0,0,224,222,1,0,0,0,225,226,5,51,0,0,226,
+		240,1,0,0,0,227,228,5,21,0,0,228,229,5,50,0,0,229,234,3,60,30,0,230,231,
+		5,60,0,0,231,233,3,60,30,0,232,230,1,0,0,0,233,236,1,0,0,0,234,232,1,0,
+		0,0,234,235,1,0,0,0,235,237,1,0,0,0,236,234,1,0,0,0,237,238,5,51,0,0,238,
+		240,1,0,0,0,239,215,1,0,0,0,239,227,1,0,0,0,240,23,1,0,0,0,241,243,5,1,
+		0,0,242,244,5,24,0,0,243,242,1,0,0,0,243,244,1,0,0,0,244,245,1,0,0,0,245,
+		246,5,22,0,0,246,247,5,23,0,0,247,248,3,58,29,0,248,249,5,3,0,0,249,254,
+		3,26,13,0,250,251,5,59,0,0,251,253,3,26,13,0,252,250,1,0,0,0,253,256,1,
+		0,0,0,254,252,1,0,0,0,254,255,1,0,0,0,255,258,1,0,0,0,256,254,1,0,0,0,
+		257,259,5,59,0,0,258,257,1,0,0,0,258,259,1,0,0,0,259,260,1,0,0,0,260,261,
+		5,2,0,0,261,262,5,22,0,0,262,263,5,23,0,0,263,25,1,0,0,0,264,271,5,24,
+		0,0,265,266,3,34,17,0,266,267,5,58,0,0,267,268,3,52,26,0,268,271,1,0,0,
+		0,269,271,3,58,29,0,270,264,1,0,0,0,270,265,1,0,0,0,270,269,1,0,0,0,271,
+		27,1,0,0,0,272,273,5,1,0,0,273,274,5,25,0,0,274,275,3,58,29,0,275,276,
+		5,3,0,0,276,277,5,22,0,0,277,278,3,30,15,0,278,279,5,2,0,0,279,280,5,25,
+		0,0,280,29,1,0,0,0,281,293,5,50,0,0,282,287,3,32,16,0,283,284,5,59,0,0,
+		284,286,3,32,16,0,285,283,1,0,0,0,286,289,1,0,0,0,287,285,1,0,0,0,287,
+		288,1,0,0,0,288,291,1,0,0,0,289,287,1,0,0,0,290,292,5,59,0,0,291,290,1,
+		0,0,0,291,292,1,0,0,0,292,294,1,0,0,0,293,282,1,0,0,0,293,294,1,0,0,0,
+		294,295,1,0,0,0,295,296,5,51,0,0,296,31,1,0,0,0,297,298,3,34,17,0,298,
+		299,5,58,0,0,299,300,3,52,26,0,300,33,1,0,0,0,301,311,5,69,0,0,302,307,
+		3,60,30,0,303,304,5,67,0,0,304,306,3,60,30,0,305,303,1,0,0,0,306,309,1,
+		0,0,0,307,305,1,0,0,0,307,308,1,0,0,0,308,311,1,0,0,0,309,307,1,0,0,0,
+		310,301,1,0,0,0,310,302,1,0,0,0,311,35,1,0,0,0,312,313,5,1,0,0,313,314,
+		5,26,0,0,314,315,3,60,30,0,315,316,5,3,0,0,316,317,5,27,0,0,317,318,5,
+		4,0,0,318,319,3,60,30,0,319,320,5,28,0,0,320,324,3,30,15,0,321,323,3,38,
+		19,0,322,321,1,0,0,0,323,326,1,0,0,0,324,322,1,0,0,0,324,325,1,0,0,0,325,
+		327,1,0,0,0,326,324,1,0,0,0,327,328,5,2,0,0,328,329,5,26,0,0,329,37,1,
+		0,0,0,330,331,7,0,0,0,331,343,5,50,0,0,332,337,3,40,20,0,333,334,5,59,
+		0,0,334,336,3,40,20,0,335,333,1,0,0,0,336,339,1,0,0,0,337,335,1,0,0,0,
+		337,338,1,0,0,0,338,341,1,0,0,0,339,337,1,0,0,0,340,342,5,59,0,0,341,340,
+		1,0,0,0,341,342,1,0,0,0,342,344,1,0,0,0,343,332,1,0,0,0,343,344,1,0,0,
+		0,344,345,1,0,0,0,345,346,5,51,0,0,346,39,1,0,0,0,347,350,3,54,27,0,348,
+		350,3,60,30,0,349,347,1,0,0,0,349,348,1,0,0,0,350,351,1,0,0,0,351,352,
+		5,58,0,0,352,353,3,52,26,0,353,41,1,0,0,0,354,355,5,1,0,0,355,356,5,31,
+		0,0,356,357,3,60,30,0,357,358,5,3,0,0,358,359,5,32,0,0,359,360,5,58,0,
+		0,360,361,3,44,22,0,361,362,5,33,0,0,362,363,5,58,0,0,363,364,3,44,22,
+		0,364,365,5,34,0,0,365,369,5,58,0,0,366,368,3,48,24,0,367,366,1,0,0,0,
+		368,371,1,0,0,0,369,367,1,0,0,0,369,370,1,0,0,0,370,372,1,0,0,0,371,369,
+		1,0,0,0,372,373,5,2,0,0,373,374,5,31,0,0,374,43,1,0,0,0,375,387,5,50,0,
+		0,376,381,3,46,23,0,377,378,5,59,0,0,378,380,3,46,23,0,379,377,1,0,0,0,
+		380,383,1,0,0,0,381,379,1,0,0,0,381,382,1,0,0,0,382,385,1,0,0,0,383,381,
+		1,0,0,0,384,386,5,59,0,0,385,384,1,0,0,0,385,386,1,0,0,0,386,388,1,0,0,
+		0,387,376,1,0,0,0,387,388,1,0,0,0,388,389,1,0,0,0,389,390,5,51,0,0,390,
+		45,1,0,0,0,391,392,3,60,30,0,392,393,7,1,0,0,393,394,3,58,29,0,394,47,
+		1,0,0,0,395,396,3,60,30,0,396,397,5,62,0,0,397,399,3,52,26,0,398,400,5,
+		59,0,0,399,398,1,0,0,0,399,400,1,0,0,0,400,432,1,0,0,0,401,402,5,35,0,
+		0,402,403,3,60,30,0,403,415,5,50,0,0,404,409,3,50,25,0,405,406,5,59,0,
+		0,406,408,3,50,25,0,407,405,1,0,0,0,408,411,1,0,0,0,409,407,1,0,0,0,409,
+		410,1,0,0,0,410,413,1,0,0,0,411,409,1,0,0,0,412,414,5,59,0,0,413,412,1,
+		0,0,0,413,414,1,0,0,0,414,416,1,0,0,0,415,404,1,0,0,0,415,416,1,0,0,0,
+		416,417,1,0,0,0,417,419,5,51,0,0,418,420,5,59,0,0,419,418,1,0,0,0,419,
+		420,1,0,0,0,420,432,1,0,0,0,421,423,5,48,0,0,422,424,5,59,0,0,423,422,
+		1,0,0,0,423,424,1,0,0,0,424,432,1,0,0,0,425,426,5,36,0,0,426,428,7,2,0,
+		0,427,429,5,59,0,0,428,427,1,0,0,0,428,429,1,0,0,0,429,432,1,0,0,0,430,
+		432,5,59,0,0,431,395,1,0,0,0,431,401,1,0,0,0,431,421,1,0,0,0,431,425,1,
+		0,0,0,431,430,1,0,0,0,432,49,1,0,0,0,433,434,3,60,30,0,434,435,5,58,0,
+		0,435,436,3,52,26,0,436,51,1,0,0,0,437,438,6,26,-1,0,438,439,5,64,0,0,
+		439,474,3,52,26,12,440,441,5,63,0,0,441,474,3,52,26,11,442,443,5,52,0,
+		0,443,444,3,52,26,0,444,445,5,53,0,0,445,474,1,0,0,0,446,474,3,56,28,0,
+		447,474,3,54,27,0,448,449,3,60,30,0,449,450,5,61,0,0,450,451,5,22,0,0,
+		451,452,3,30,15,0,452,474,1,0,0,0,453,454,3,58,29,0,454,463,5,52,0,0,455,
+		460,3,52,26,0,456,457,5,60,0,0,457,459,3,52,26,0,458,456,1,0,0,0,459,462,
+		1,0,0,0,460,458,1,0,0,0,460,461,1,0,0,0,461,464,1,0,0,0,462,460,1,0,0,
+		0,463,455,1,0,0,0,463,464,1,0,0,0,464,465,1,0,0,0,465,466,5,53,0,0,466,
+		474,1,0,0,0,467,468,3,58,29,0,468,469,5,54,0,0,469,470,3,52,26,0,470,471,
+		5,55,0,0,471,474,1,0,0,0,472,474,3,58,29,0,473,437,1,0,0,0,473,440,1,0,
+		0,0,473,442,1,0,0,0,473,446,1,0,0,0,473,447,1,0,0,0,473,448,1,0,0,0,473,
+		453,1,0,0,0,473,467,1,0,0,0,473,472,1,0,0,0,474,495,1,0,0,0,475,476,10,
+		13,0,0,476,477,5,67,0,0,477,494,3,52,26,13,478,479,10,10,0,0,479,480,7,
+		3,0,0,480,494,3,52,26,11,481,482,10,9,0,0,482,483,7,4,0,0,483,494,3,52,
+		26,10,484,485,10,8,0,0,485,486,7,5,0,0,486,494,3,52,26,9,487,488,10,14,
+		0,0,488,489,5,61,0,0,489,490,5,56,0,0,490,491,3,34,17,0,491,492,5,57,0,
+		0,492,494,1,0,0,0,493,475,1,0,0,0,493,478,1,0,0,0,493,481,1,0,0,0,493,
+		484,1,0,0,0,493,487,1,0,0,0,494,497,1,0,0,0,495,493,1,0,0,0,495,496,1,
+		0,0,0,496,53,1,0,0,0,497,495,1,0,0,0,498,499,5,56,0,0,499,504,3,60,30,
+		0,500,501,5,61,0,0,501,503,3,60,30,0,502,500,1,0,0,0,503,506,1,0,0,0,504,
+		502,1,0,0,0,504,505,1,0,0,0,505,507,1,0,0,0,506,504,1,0,0,0,507,508,5,
+		57,0,0,508,55,1,0,0,0,509,510,7,6,0,0,510,57,1,0,0,0,511,516,3,60,30,0,
+		512,513,5,61,0,0,513,515,3,60,30,0,514,512,1,0,0,0,515,518,1,0,0,0,516,
+		514,1,0,0,0,516,517,1,0,0,0,517,59,1,0,0,0,518,516,1,0,0,0,519,520,7,7,
+		0,0,520,61,1,0,0,0,46,65,77,90,98,126,137,142,154,165,205,222,234,239,
+		243,254,258,270,287,291,293,307,310,324,337,341,343,349,369,381,385,387,
+		399,409,413,415,419,423,428,431,460,463,473,493,495,504,516
 	};
 
 	public static readonly ATN _ATN =

@@ -100,6 +100,19 @@ internal interface IGMacDslVisitor<Result> : IParseTreeVisitor<Result> {
 	/// <return>The visitor result.</return>
 	Result VisitSignatureFrame([NotNull] GMacDslParser.SignatureFrameContext context);
 	/// <summary>
+	/// Visit a parse tree produced by the <c>namedSignatureFrame</c>
+	/// labeled alternative in <see cref="GMacDslParser.frameBody"/>.
+	/// </summary>
+	/// <param name="context">The parse tree.</param>
+	/// <return>The visitor result.</return>
+	Result VisitNamedSignatureFrame([NotNull] GMacDslParser.NamedSignatureFrameContext context);
+	/// <summary>
+	/// Visit a parse tree produced by <see cref="GMacDslParser.signatureEntry"/>.
+	/// </summary>
+	/// <param name="context">The parse tree.</param>
+	/// <return>The visitor result.</return>
+	Result VisitSignatureEntry([NotNull] GMacDslParser.SignatureEntryContext context);
+	/// <summary>
 	/// Visit a parse tree produced by <see cref="GMacDslParser.matrix"/>.
 	/// </summary>
 	/// <param name="context">The parse tree.</param>
