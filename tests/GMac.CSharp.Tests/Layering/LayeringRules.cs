@@ -19,7 +19,8 @@ internal static partial class LayeringRules
         ("GMac.Dsl", ["GMac.Core", "SafeFiles"], ["Antlr4.Runtime.Standard"], ["GMac.Core"]),
         ("GMac.CSharp", ["GMac.Dsl", "SafeFiles"], ["Microsoft.CodeAnalysis.CSharp"], ["GMac.Dsl", "Microsoft.CodeAnalysis.CSharp"]),
         // Core and Dsl come to the Cli through the host: its commands are thin, the host is their one way in.
-        ("GMac.Cli", ["GMac.CSharp"], ["System.CommandLine"], ["GMac.CSharp"]),
+        // StreamJsonRpc carries the language server (gmac lsp), a command like the others.
+        ("GMac.Cli", ["GMac.CSharp"], ["System.CommandLine", "StreamJsonRpc"], ["GMac.CSharp"]),
     ];
 
     public static List<string> ProjectViolations(string root)
