@@ -144,4 +144,17 @@ public class Complements_Identities
             MultivectorAssert.Close(a.Reverse().Gp(pseudoscalar), a.RightComplement());
         }
     }
+
+    [Fact]
+    public void Plane_and_point_complements_relabel_like_the_poincare_dual_of_klein()
+    {
+        // klein's documented example with basis order e0, e1, e2, e3: the plane e0 + 3e2 − 2e3 and
+        // the point e123 + 3e013 − 2e021 = e123 + 3e013 + 2e012. The complement needs no metric.
+        var frame = Frame.Euclidean("p", 4);
+        static BasisBlade B(params int[] i) => new(i.Sum(k => 1 << k));
+        var plane = Multivector<double>.FromTerms(frame, [(B(0), 1.0), (B(2), 3.0), (B(3), -2.0)]);
+        var point = Multivector<double>.FromTerms(frame, [(B(1, 2, 3), 1.0), (B(0, 1, 3), 3.0), (B(0, 1, 2), 2.0)]);
+        MultivectorAssert.Close(point, plane.RightComplement());
+        MultivectorAssert.Close(plane, point.LeftComplement());
+    }
 }
