@@ -17,7 +17,7 @@ internal sealed class LanguageServer(TextWriter log)
         "define", "end", "frame", "subspace", "multivector", "class", "constant", "binding", "macro", "transform", "as", "use",
         "basis", "signature", "Euclidean", "IPM", "BCM", "orthogonalize", "normalized", "inputs", "outputs", "performs", "output",
         "bind", "call", "join", "using", "alias", "identity", "inverse", "outermorphism", "transpose", "of", "by", "on", "off", "min", "max",
-        "gp", "op", "sp", "lcp", "rcp", "fdp", "hip", "cp", "acp",
+        "gp", "op", "sp", "lcp", "rcp", "fdp", "hip", "cp", "acp", "vee",
     ];
 
     private static readonly Dictionary<string, string> Products = new(StringComparer.Ordinal)
@@ -31,6 +31,7 @@ internal sealed class LanguageServer(TextWriter log)
         ["hip"] = "Hestenes inner product: `A hip B` = ⟨AB⟩ of grade |r−s|, zero when A or B is a scalar",
         ["cp"] = "commutator product: `A cp B` = A×B = (AB − BA)/2",
         ["acp"] = "anti-commutator product: `A acp B` = (AB + BA)/2",
+        ["vee"] = "regressive product: `A vee B` = lcomplement(rcomplement(A) ∧ rcomplement(B)), of grade r+s−n; metric independent (the meet in PGA)",
     };
 
     private Workspace? _workspace;

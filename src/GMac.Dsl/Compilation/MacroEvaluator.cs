@@ -262,6 +262,8 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
             UnaryOperator.Inverse => a.Inverse(),
             UnaryOperator.Dual => a.Dual(),
             UnaryOperator.Undual => a.Undual(),
+            UnaryOperator.RightComplement => a.RightComplement(),
+            UnaryOperator.LeftComplement => a.LeftComplement(),
             UnaryOperator.Exp => a.Exp(IsBladeByStructure(u.Operand, context.Macro, 0)),
             UnaryOperator.Norm => Scalar(a.Norm()),
             UnaryOperator.Norm2 => Scalar(a.Norm2()),
@@ -356,6 +358,7 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
             BinaryOperator.Hip => l.Hip(r),
             BinaryOperator.Cp => l.Cp(r),
             BinaryOperator.Acp => l.Acp(r),
+            BinaryOperator.Vee => l.Regressive(r),
             _ => throw new MacroEvaluationException(b.Span, $"'{b.Operator}' needs scalar operands"),
         });
     }

@@ -51,6 +51,10 @@ public sealed class DiagnosticBag
         Report(DiagnosticCodes.UsedBeforeAssignment, span, $"'{name}' is used before it is assigned");
     public void ReportTypeError(SourceSpan span, string message) => Report(DiagnosticCodes.TypeError, span, message);
     public void ReportCallError(SourceSpan span, string message) => Report(DiagnosticCodes.CallError, span, message);
+    public void ReportNoDual(SourceSpan span, string function, string frame) =>
+        Report(DiagnosticCodes.NoDual, span,
+            $"'{function}' needs an invertible metric, but frame '{frame}' is degenerate (its pseudoscalar squares to zero); "
+            + "use rcomplement(A) (A ∧ rcomplement(A) = I) and lcomplement(A) for duality, and 'vee' for the regressive product (join of points, meet in a dual model)");
 
     // ---- frames, transforms, matrices
     public void ReportNotInvertible(SourceSpan span, string name) =>

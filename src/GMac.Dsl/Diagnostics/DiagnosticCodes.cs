@@ -30,6 +30,7 @@ public static class DiagnosticCodes
     public static readonly DiagnosticDescriptor UsedBeforeAssignment = new("GMAC0115", Error, "a variable is used before it is assigned", ReportedBy.DslLoad);
     public static readonly DiagnosticDescriptor TypeError = new("GMAC0116", Error, "an operation, function or blade does not fit its operands", ReportedBy.DslLoad);
     public static readonly DiagnosticDescriptor CallError = new("GMAC0117", Error, "a macro call does not match the macro's inputs and outputs", ReportedBy.DslLoad);
+    public static readonly DiagnosticDescriptor NoDual = new("GMAC0118", Error, "dual or undual in a frame whose metric is not invertible (degenerate); rcomplement, lcomplement and vee work there", ReportedBy.DslLoad);
 
     // ---- frames, transforms, matrices
     public static readonly DiagnosticDescriptor NotInvertible = new("GMAC0120", Error, "'inverse of' names a transform that is not invertible", ReportedBy.DslLoad);

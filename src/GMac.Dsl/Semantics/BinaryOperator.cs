@@ -18,4 +18,6 @@ public enum BinaryOperator
     Hip,
     Cp,
     Acp,
+    /// <summary>The regressive product <c>vee</c>: ★⁻¹(★A ∧ ★B), metric independent.</summary>
+    Vee,
 }

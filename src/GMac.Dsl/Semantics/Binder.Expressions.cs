@@ -32,6 +32,7 @@ internal sealed partial class Binder
         ["reverse"] = UnaryOperator.Reverse, ["grade_inv"] = UnaryOperator.GradeInvolution,
         ["cliff_conj"] = UnaryOperator.CliffordConjugate, ["inverse"] = UnaryOperator.Inverse,
         ["dual"] = UnaryOperator.Dual, ["undual"] = UnaryOperator.Undual, ["norm"] = UnaryOperator.Norm,
+        ["rcomplement"] = UnaryOperator.RightComplement, ["lcomplement"] = UnaryOperator.LeftComplement,
         ["norm2"] = UnaryOperator.Norm2, ["quasi_norm"] = UnaryOperator.QuasiNorm, ["quasi_norm2"] = UnaryOperator.QuasiNorm2,
     };
 
@@ -261,7 +262,7 @@ internal sealed partial class Binder
         {
             "gp" => BinaryOperator.Gp, "op" => BinaryOperator.Op, "sp" => BinaryOperator.Sp,
             "lcp" => BinaryOperator.Lcp, "rcp" => BinaryOperator.Rcp, "fdp" => BinaryOperator.Fdp,
-            "hip" => BinaryOperator.Hip, "cp" => BinaryOperator.Cp, _ => BinaryOperator.Acp,
+            "hip" => BinaryOperator.Hip, "cp" => BinaryOperator.Cp, "vee" => BinaryOperator.Vee, _ => BinaryOperator.Acp,
         };
         var frame = Combine(l, r, span);
         if (frame is null)
@@ -291,6 +292,7 @@ internal sealed partial class Binder
                     case BinaryOperator.Rcp: if (a >= b) result |= 1 << (a - b); break;
                     case BinaryOperator.Fdp: result |= 1 << Math.Abs(a - b); break;
                     case BinaryOperator.Hip: if (a > 0 && b > 0) result |= 1 << Math.Abs(a - b); break;
+                    case BinaryOperator.Vee: if (a + b >= n) result |= 1 << (a + b - n); break;
                     default:
                         for (var g = Math.Abs(a - b); g <= Math.Min(a + b, n); g += 2) result |= 1 << g;
                         break;

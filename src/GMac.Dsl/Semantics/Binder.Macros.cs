@@ -344,10 +344,16 @@ internal sealed partial class Binder
             if (!Arity(1) || Multivector(0) is not { } operand) return null;
             var frame = operand.Type.Frame!;
             var n = frame.Dimension;
+            // A⌋I⁻¹ needs I invertible; with a null basis vector it is not, and the complement is what works.
+            if (unary is UnaryOperator.Dual or UnaryOperator.Undual && frame.InnerProductMatrix.Determinant().IsZero)
+            {
+                _diagnostics.ReportNoDual(span, name, frame.Name);
+                return null;
+            }
             var grades = unary switch
             {
                 UnaryOperator.Norm or UnaryOperator.Norm2 or UnaryOperator.QuasiNorm or UnaryOperator.QuasiNorm2 => 1,
-                UnaryOperator.Dual or UnaryOperator.Undual => Enumerable.Range(0, n + 1)
+                UnaryOperator.Dual or UnaryOperator.Undual or UnaryOperator.RightComplement or UnaryOperator.LeftComplement => Enumerable.Range(0, n + 1)
                     .Where(g => (operand.Type.GradeMask & (1 << g)) != 0).Aggregate(0, (m, g) => m | (1 << (n - g))),
                 _ => operand.Type.GradeMask,
             };

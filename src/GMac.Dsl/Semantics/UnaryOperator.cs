@@ -9,6 +9,10 @@ public enum UnaryOperator
     Inverse,
     Dual,
     Undual,
+    /// <summary>Right complement: A ∧ rcomplement(A) = I on basis blades, metric independent.</summary>
+    RightComplement,
+    /// <summary>Left complement: lcomplement(A) ∧ A = I on basis blades, the inverse of the right one.</summary>
+    LeftComplement,
     Exp,
     Norm,
     Norm2,

@@ -163,7 +163,7 @@ expr
     | '-' expr                                               # negateExpr
     | '+' expr                                               # plusExpr
     | expr op = ('*' | '/') expr                             # scaleExpr
-    | expr op = (GP | OP | SP | LCP | RCP | FDP | HIP | CP | ACP) expr   # productExpr
+    | expr op = (GP | OP | SP | LCP | RCP | FDP | HIP | CP | ACP | VEE) expr   # productExpr
     | expr op = ('+' | '-') expr                             # sumExpr
     | '(' expr ')'                                           # parenExpr
     | number                                                 # numberExpr
@@ -248,6 +248,7 @@ FDP : 'fdp';
 HIP : 'hip';
 CP  : 'cp';
 ACP : 'acp';
+VEE : 'vee';
 
 // `output { ... }` carries raw target-language text up to the matching brace.
 OUTPUT_BLOCK : 'output' [ \t\r\n]* '{' (~[{}] | NESTED_BRACES)* '}';

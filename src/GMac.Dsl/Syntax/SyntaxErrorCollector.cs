@@ -35,10 +35,10 @@ internal sealed class SyntaxErrorCollector(string filePath, DiagnosticBag diagno
         int charPositionInLine, string msg, RecognitionException e) =>
         diagnostics.ReportSyntaxError(new SourceSpan(filePath, Math.Max(1, line), charPositionInLine + 1, 0, 1), msg);
 
-    private const string Products = "gp, op, sp, lcp, rcp, fdp, hip, cp, acp (and +, -, *, /, ^)";
+    private const string Products = "gp, op, sp, lcp, rcp, fdp, hip, cp, acp, vee (and +, -, *, /, ^)";
 
     /// <summary>
-    /// In `y = a vee b` the parser ends the statement after `a` and reads `vee b` as a new one
+    /// In `y = a meet b` the parser ends the statement after `a` and reads `meet b` as a new one
     /// missing its '='. A name between the end of an operand and the offending token, all on one
     /// line, is an operator word the language does not have.
     /// </summary>

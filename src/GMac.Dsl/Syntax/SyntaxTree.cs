@@ -219,7 +219,8 @@ public sealed class SyntaxTree
                     break;
                 case GMacDslLexer.MINUS or GMacDslLexer.PLUS or GMacDslLexer.STAR or GMacDslLexer.SLASH
                     or GMacDslLexer.CARET or GMacDslLexer.GP or GMacDslLexer.OP or GMacDslLexer.SP or GMacDslLexer.LCP
-                    or GMacDslLexer.RCP or GMacDslLexer.FDP or GMacDslLexer.HIP or GMacDslLexer.CP or GMacDslLexer.ACP:
+                    or GMacDslLexer.RCP or GMacDslLexer.FDP or GMacDslLexer.HIP or GMacDslLexer.CP or GMacDslLexer.ACP
+                    or GMacDslLexer.VEE:
                     run++;
                     break;
                 case GMacDslLexer.ID or GMacDslLexer.INT or GMacDslLexer.FLOAT or GMacDslLexer.DOT or GMacDslLexer.LT or GMacDslLexer.GT:

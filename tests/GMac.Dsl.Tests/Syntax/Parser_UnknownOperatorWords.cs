@@ -2,11 +2,11 @@ using GMac.Dsl.Tests.Support;
 
 namespace GMac.Dsl.Tests.Syntax;
 
-/// <summary>A word between two operands that is no product (`a vee b`) is named as an unknown operator, at the word.</summary>
+/// <summary>A word between two operands that is no product (`a meet b`) is named as an unknown operator, at the word.</summary>
 public sealed class Parser_UnknownOperatorWords
 {
     [Theory]
-    [InlineData("y = a «vee» b;")]
+    [InlineData("y = a «meet» b;")]
     [InlineData("y = (a gp b) «wedge» (b op a);")]
     [InlineData("y = 2 «dot» a;")]
     public void An_unknown_word_between_operands_is_an_unknown_operator(string statement)
@@ -20,7 +20,7 @@ public sealed class Parser_UnknownOperatorWords
             end macro
             """, "GMAC0001", DslSnippets.E3d);
         Assert.StartsWith("unknown operator '", d.Message);
-        Assert.EndsWith("'; the products are gp, op, sp, lcp, rcp, fdp, hip, cp, acp (and +, -, *, /, ^)", d.Message);
+        Assert.EndsWith("'; the products are gp, op, sp, lcp, rcp, fdp, hip, cp, acp, vee (and +, -, *, /, ^)", d.Message);
     }
 
     [Fact]
