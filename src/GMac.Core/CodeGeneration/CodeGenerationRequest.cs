@@ -16,6 +16,12 @@ public sealed record CodeGenerationRequest(
     /// <summary>Applied to every output and temporary: side relations, assumptions, the CAS.</summary>
     public Func<Scalar, Scalar>? Simplify { get; init; }
 
+    /// <summary>
+    /// The polynomial relations the inputs satisfy (the unit norm of a rotor), which <see cref="Simplify"/>
+    /// may use: the accuracy probe compares the forms on inputs that satisfy them, where they agree.
+    /// </summary>
+    public SideRelations Relations { get; init; } = SideRelations.None;
+
     public JoinMode Join { get; init; } = JoinMode.Automatic;
 
     /// <summary>Expressions evaluated once before the code; see <see cref="CodeBlock.EvaluatedOnce"/>.</summary>

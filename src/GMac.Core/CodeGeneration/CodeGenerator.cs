@@ -54,7 +54,7 @@ public static class CodeGenerator
             .OrderBy(c => c.Stats.Cost).ThenBy(c => c.Stats.Temporaries).ThenBy(c => c.Form == JoinMode.Joined ? 0 : 1).ThenBy(c => c.Index)
             .ToList();
         // accuracy overrules cost only where the cheaper form loses far more than the others
-        var best = ranked[GenerationProfile.Time("accuracy probe", () => AccuracyProbe.MostAccurateAffordable(ranked.Select(c => c.Block).ToList()))];
+        var best = ranked[GenerationProfile.Time("accuracy probe", () => AccuracyProbe.MostAccurateAffordable(ranked.Select(c => c.Block).ToList(), request.Relations))];
         var alternative = ranked.Skip(1).FirstOrDefault(c => c.Form != best.Form);
         // signs are placed on the kept form alone: that changes no count, so no choice above
         return new CodeGenerationResult(Optimizer.Finish(best.Block), best.Stats, best.Form, alternative.Block is null ? null : alternative.Stats);

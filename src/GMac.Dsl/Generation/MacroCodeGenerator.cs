@@ -153,6 +153,7 @@ public sealed partial class MacroCodeGenerator
         var request = new CodeGenerationRequest(Evaluate, atoms.Texts, outputTargets)
         {
             Simplify = s => _cas.Simplify(s, assumptions),
+            Relations = relations,
             Join = join,
             EvaluatedOnce = atoms.EvaluatedOnce,
         };
