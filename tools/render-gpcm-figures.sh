@@ -4,8 +4,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 out=docs/images/gpcm
 mkdir -p "$out"
-dotnet build -c Release src/RayTracer >/dev/null
-rt() { dotnet src/RayTracer/bin/Release/net10.0/raytracer.dll render "$@" --seed 1; }
+dotnet build -c Release src/RayTracer.App >/dev/null
+rt() { dotnet src/RayTracer.App/bin/Release/net10.0/raytracer.dll render "$@" --seed 1; }
 
 rt gpcm-rectangular -o "$out/rectangular-70.png"
 for kind in cylindrical conic; do

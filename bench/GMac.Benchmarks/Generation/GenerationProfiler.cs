@@ -3,7 +3,7 @@ using GMac.Core.CodeGeneration;
 using GMac.Core.Symbolic;
 using GMac.Dsl;
 using GMac.Dsl.Generation;
-using RayTracer.Cli.Experiments;
+using RayTracer.Timing;
 
 namespace GMac.Benchmarks.Generation;
 

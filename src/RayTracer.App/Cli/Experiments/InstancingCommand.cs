@@ -105,7 +105,7 @@ public static class InstancingCommand
     /// <summary>The command as a user would type it again from the repository root.</summary>
     private static string CommandLine(ParseResult parsed)
     {
-        var words = new List<string> { "dotnet run -c Release --project src/RayTracer -- experiments instancing" };
+        var words = new List<string> { "dotnet run -c Release --project src/RayTracer.App -- experiments instancing" };
         words.AddRange(parsed.Tokens.SkipWhile(t => t.Value != "instancing").Skip(1).Select(t => t.Value));
         return string.Join(' ', words);
     }

@@ -2,6 +2,7 @@ using System.Runtime.InteropServices;
 using RayTracer.Geometry;
 using RayTracer.Scenes;
 using RayTracer.Scenes.Instancing;
+using RayTracer.Timing;
 using RayTracer.Tracing;
 using RayTracer.Viewing;
 using RayTracer.Viewing.Imaging;

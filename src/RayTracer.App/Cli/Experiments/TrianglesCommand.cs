@@ -39,7 +39,7 @@ public static class TrianglesCommand
                 Scenes = parsed.GetValue(only) ?? [],
             };
             var folder = parsed.GetValue(output) ?? Path.Combine("bench", "results");
-            var commandLine = "dotnet run -c Release --project src/RayTracer -- experiments triangles " + string.Join(' ', parsed.Tokens.Select(t => t.Value).SkipWhile(t => t != "triangles").Skip(1));
+            var commandLine = "dotnet run -c Release --project src/RayTracer.App -- experiments triangles " + string.Join(' ', parsed.Tokens.Select(t => t.Value).SkipWhile(t => t != "triangles").Skip(1));
             return Run(settings, folder, commandLine.TrimEnd(), stdout, stderr);
         });
         return command;

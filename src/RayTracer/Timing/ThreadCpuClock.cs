@@ -1,7 +1,7 @@
 using System.Diagnostics;
 using System.Runtime.InteropServices;
 
-namespace RayTracer.Cli.Experiments;
+namespace RayTracer.Timing;
 
 /// <summary>
 /// The CPU time of the calling thread where the system tells it (Linux: CLOCK_THREAD_CPUTIME_ID),

@@ -1,6 +1,7 @@
 using System.Globalization;
 using System.Text;
 using RayTracer.Scenes.Instancing;
+using RayTracer.Timing;
 
 namespace RayTracer.Cli.Experiments;
 
