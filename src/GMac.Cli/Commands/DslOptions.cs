@@ -67,6 +67,10 @@ internal sealed class DslOptions
         return sources;
     }
 
+    /// <summary>Binds the sources into a generation context whose cache is <paramref name="cache"/>, else <see cref="DefaultCacheDirectory"/>; null (errors printed) when the DSL has errors.</summary>
+    public static GenerationContext? Load(IReadOnlyList<string> sources, string? cache, TextWriter error) =>
+        DslLoader.Load(sources, cache ?? DefaultCacheDirectory(sources), error);
+
     /// <summary>The library copied next to gmac's own assembly (see GMac.Cli.csproj).</summary>
     public static string StandardLibraryDirectory => Path.Combine(AppContext.BaseDirectory, "dsl");
 

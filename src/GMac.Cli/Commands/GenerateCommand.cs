@@ -44,7 +44,7 @@ internal static class GenerateCommand
                 sources = [.. r.GetValue(paths) ?? [], .. listed];
             }
             if (dsl.Resolve(r, error, out var failure) is not { } dslSources) return failure;
-            var context = DslLoader.Load(dslSources, r.GetValue(cache) ?? DslOptions.DefaultCacheDirectory(dslSources), error);
+            var context = DslOptions.Load(dslSources, r.GetValue(cache), error);
             if (context is null) return ExitCodes.Diagnostics;
             context.DefaultScalarType = r.GetValue(scalar)!;
             return SourceGeneration.Run(context, sources, r.GetValue(check), r.GetValue(stats), r.InvocationConfiguration.Output, error, watch) ? ExitCodes.Success : ExitCodes.Diagnostics;

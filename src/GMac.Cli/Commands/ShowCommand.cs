@@ -73,7 +73,7 @@ internal static class ShowCommand
     {
         // Every value was checked by the option's validator.
         var specs = values.Select((v, i) => ParseSpec(v.Option, v.Value, i + 1)!).ToList();
-        var context = DslLoader.Load(dsl, cache ?? DslOptions.DefaultCacheDirectory(dsl), error);
+        var context = DslOptions.Load(dsl, cache, error);
         if (context is null) return ExitCodes.Diagnostics;
         // Default bindings get line 0 so their errors are not blamed on a --bind option.
         if (specs.Count == 0 || specs.All(s => s is AssumptionSpec))

@@ -23,7 +23,7 @@ internal static class VerifyCommand
         {
             var error = r.InvocationConfiguration.Error;
             if (dsl.Resolve(r, error, out var failure) is not { } sources) return failure;
-            var context = DslLoader.Load(sources, r.GetValue(cache) ?? DslOptions.DefaultCacheDirectory(sources), error);
+            var context = DslOptions.Load(sources, r.GetValue(cache), error);
             if (context is null) return ExitCodes.Diagnostics;
             context.DefaultScalarType = r.GetValue(scalar)!;
             return SourceVerification.Run(context, SharedOptions.PathsOrCurrent(r.GetValue(paths)), r.GetValue(seed), r.InvocationConfiguration.Output, error) ? ExitCodes.Success : ExitCodes.Diagnostics;

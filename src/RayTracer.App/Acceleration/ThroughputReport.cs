@@ -107,9 +107,9 @@ public static class ThroughputReport
             output.WriteLine(Row("Embree rtcIntersect1", embreeBuild, embreePrimary, rays.Length, "hits"));
             long differ = CountDisagreements(new Nearest(bvh!), new Nearest(embree), rays, double.PositiveInfinity, threads);
             output.WriteLine(Comparison(bvhPrimary, embreePrimary, "hits", differ, "rtcIntersect1"));
-            var packets = Time(new EmbreeNearest8(embree), rays, double.PositiveInfinity, threads);
+            var packets = Time(new EmbreePackets(embree, anyHit: false), rays, double.PositiveInfinity, threads);
             output.WriteLine(Row("Embree rtcIntersect8", null, packets, rays.Length, "hits"));
-            differ = CountDisagreements(new Nearest(bvh!), new EmbreeNearest8(embree), rays, double.PositiveInfinity, threads);
+            differ = CountDisagreements(new Nearest(bvh!), new EmbreePackets(embree, anyHit: false), rays, double.PositiveInfinity, threads);
             output.WriteLine(Comparison(bvhPrimary, packets, "hits", differ, "rtcIntersect8"));
         }
 
@@ -123,9 +123,9 @@ public static class ThroughputReport
             output.WriteLine(Row("Embree rtcOccluded1", null, embreeShadow, shadowRays.Length, "occluded"));
             long differ = CountDisagreements(new Any(bvh!), new Any(embree), shadowRays, 1.0, threads);
             output.WriteLine(Comparison(bvhShadow, embreeShadow, "occluded", differ, "rtcOccluded1"));
-            var packets = Time(new EmbreeAny8(embree), shadowRays, 1.0, threads);
+            var packets = Time(new EmbreePackets(embree, anyHit: true), shadowRays, 1.0, threads);
             output.WriteLine(Row("Embree rtcOccluded8", null, packets, shadowRays.Length, "occluded"));
-            differ = CountDisagreements(new Any(bvh!), new EmbreeAny8(embree), shadowRays, 1.0, threads);
+            differ = CountDisagreements(new Any(bvh!), new EmbreePackets(embree, anyHit: true), shadowRays, 1.0, threads);
             output.WriteLine(Comparison(bvhShadow, packets, "occluded", differ, "rtcOccluded8"));
         }
     }
@@ -376,8 +376,8 @@ public static class ThroughputReport
         }
     }
 
-    /// <summary>Packets of 8 consecutive rays (neighbouring pixels of a row).</summary>
-    private readonly struct EmbreeNearest8(EmbreeScene scene) : IRayCaster
+    /// <summary>Packets of 8 consecutive rays (neighbouring pixels of a row), nearest hit or any hit.</summary>
+    private readonly struct EmbreePackets(EmbreeScene scene, bool anyHit) : IRayCaster
     {
         public int Cast(ReadOnlySpan<Ray> rays, double tMax, Span<bool> answers)
         {
@@ -385,25 +385,8 @@ public static class ThroughputReport
             for (int i = 0; i < rays.Length; i += 8)
             {
                 int n = Math.Min(8, rays.Length - i);
-                int mask = scene.IntersectNearest8(rays.Slice(i, n), tMax);
-                count += BitOperations.PopCount((uint)mask);
-                for (int k = 0; k < n && !answers.IsEmpty; k++)
-                    answers[i + k] = (mask & (1 << k)) != 0;
-            }
-
-            return count;
-        }
-    }
-
-    private readonly struct EmbreeAny8(EmbreeScene scene) : IRayCaster
-    {
-        public int Cast(ReadOnlySpan<Ray> rays, double tMax, Span<bool> answers)
-        {
-            int count = 0;
-            for (int i = 0; i < rays.Length; i += 8)
-            {
-                int n = Math.Min(8, rays.Length - i);
-                int mask = scene.IntersectAny8(rays.Slice(i, n), tMax);
+                var packet = rays.Slice(i, n);
+                int mask = anyHit ? scene.IntersectAny8(packet, tMax) : scene.IntersectNearest8(packet, tMax);
                 count += BitOperations.PopCount((uint)mask);
                 for (int k = 0; k < n && !answers.IsEmpty; k++)
                     answers[i + k] = (mask & (1 << k)) != 0;
