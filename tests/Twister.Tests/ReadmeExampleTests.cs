@@ -2,7 +2,7 @@ using Twister;
 
 namespace Twister.Tests;
 
-/// <summary>The usage example of the README, kept compiling and true.</summary>
+/// <summary>The usage example of docs/twister.md, kept compiling and true.</summary>
 public sealed class ReadmeExampleTests
 {
     [Fact]
