@@ -37,7 +37,7 @@ internal static class Cookbook
             foreach (var (_, group) in same.Skip(1))
                 problems.Add(new(CookbookAnnotation, group.At, $"group number {same.Key} is already taken by '{same.First().Value.Title}' ({same.First().Value.At.FilePath})"));
 
-        var entries = new List<(string GroupFile, CookbookEntry Entry)>();
+        var pending = new List<(string GroupFile, MacroSymbol Macro, MacroAnnotations Annotations, string Point)>();
         foreach (var macro in model.Macros.Values.OrderBy(m => m.Declaration.FilePath, StringComparer.Ordinal).ThenBy(m => m.Declaration.Line))
         {
             var path = macro.Declaration.FilePath;
@@ -59,9 +59,21 @@ internal static class Cookbook
                 problems.Add(new(CookbookAnnotation, macro.Declaration, $"macro '{macro.Name}' has no cookbook group: give its file a line '// cookbook group N: Title'"));
                 continue;
             }
-            var point = BindingPoint(macro, annotations, model, problems);
-            if (point is null) continue;
-            if (Statistics(context, macro, point, problems) is { } statistics)
+            if (BindingPoint(macro, annotations, model, problems) is { } point) pending.Add((groupFile, macro, annotations, point));
+        }
+        // Generated on every core, as gmac generate does with its files (the context is safe for that), then kept in library order.
+        var generated = new (Core.CodeGeneration.CodeStatistics? Statistics, List<Diagnostic> Problems)[pending.Count];
+        Parallel.For(0, pending.Count, new ParallelOptions { MaxDegreeOfParallelism = Environment.ProcessorCount }, i =>
+        {
+            var found = new List<Diagnostic>();
+            generated[i] = (Statistics(context, pending[i].Macro, pending[i].Point, found), found);
+        });
+        var entries = new List<(string GroupFile, CookbookEntry Entry)>();
+        for (var i = 0; i < pending.Count; i++)
+        {
+            problems.AddRange(generated[i].Problems);
+            var (groupFile, macro, annotations, point) = pending[i];
+            if (generated[i].Statistics is { } statistics)
                 entries.Add((groupFile, new CookbookEntry(macro, annotations.Description, point, statistics, annotations.Hand)));
         }
         var groups = fileGroups
