@@ -30,7 +30,7 @@ internal static class Cookbook
         var problems = new List<Diagnostic>();
         var model = context.Project.Model;
         var files = context.Project.SyntaxTrees.ToDictionary(t => t.FilePath, t => SourceText.SplitLines(t.Text).Select(l => l.TrimEnd('\r', '\n')).ToList(), StringComparer.Ordinal);
-        var fileGroups = new Dictionary<string, (int Order, string Title, SourceSpan At)>(StringComparer.Ordinal);
+        var fileGroups = new Dictionary<string, (int Order, string Title, string Intro, SourceSpan At)>(StringComparer.Ordinal);
         foreach (var (path, lines) in files)
             if (CookbookAnnotations.FileGroup(path, lines, problems) is { } group) fileGroups[path] = group;
         foreach (var same in fileGroups.GroupBy(g => g.Value.Order).Where(g => g.Count() > 1))
@@ -78,7 +78,7 @@ internal static class Cookbook
         }
         var groups = fileGroups
             .OrderBy(g => g.Value.Order)
-            .Select(g => new CookbookGroup(g.Value.Order, g.Value.Title, g.Key, entries.Where(e => e.GroupFile == g.Key).Select(e => e.Entry).ToList()))
+            .Select(g => new CookbookGroup(g.Value.Order, g.Value.Title, g.Value.Intro, g.Key, entries.Where(e => e.GroupFile == g.Key).Select(e => e.Entry).ToList()))
             .Where(g => g.Entries.Count > 0)
             .ToList();
         return (groups, problems);

@@ -14,19 +14,28 @@ namespace GMac.CSharp.Docs;
 /// </summary>
 internal static partial class CookbookAnnotations
 {
-    /// <summary>The file's group line, if any; an error for a second one or a malformed one.</summary>
-    public static (int Order, string Title, SourceSpan At)? FileGroup(string path, IReadOnlyList<string> lines, List<Diagnostic> problems)
+    /// <summary>
+    /// The file's group line, if any, with the comment lines right after it (the group's introduction);
+    /// an error for a second one or a malformed one.
+    /// </summary>
+    public static (int Order, string Title, string Intro, SourceSpan At)? FileGroup(string path, IReadOnlyList<string> lines, List<Diagnostic> problems)
     {
-        (int, string, SourceSpan)? group = null;
+        (int, string, string, SourceSpan)? group = null;
         for (var i = 0; i < lines.Count; i++)
         {
             if (Annotation().Match(lines[i]) is not { Success: true } m || m.Groups["key"].Value != "group" || m.Groups["order"].Value.Length == 0) continue;
             var at = SourceSpan.At(path, i + 1, 1);
             if (group is { } first)
-                problems.Add(new(Dsl.Diagnostics.DiagnosticCodes.CookbookAnnotation, at, $"a second 'cookbook group N:' line; the file's group is already given at line {first.Item3.Line}"));
+                problems.Add(new(Dsl.Diagnostics.DiagnosticCodes.CookbookAnnotation, at, $"a second 'cookbook group N:' line; the file's group is already given at line {first.Item4.Line}"));
             else if (!int.TryParse(m.Groups["order"].Value, out var order) || m.Groups["text"].Value.Length == 0)
                 problems.Add(new(Dsl.Diagnostics.DiagnosticCodes.CookbookAnnotation, at, "expected '// cookbook group N: Title'"));
-            else group = (order, m.Groups["text"].Value, at);
+            else
+            {
+                var intro = lines.Skip(i + 1)
+                    .TakeWhile(l => l.TrimStart().StartsWith("//", StringComparison.Ordinal) && !Mention().IsMatch(l))
+                    .Select(l => l.TrimStart()[2..].Trim());
+                group = (order, m.Groups["text"].Value, string.Join(" ", intro.Where(l => l.Length > 0)), at);
+            }
         }
         return group;
     }

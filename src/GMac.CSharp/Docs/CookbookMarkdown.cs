@@ -33,6 +33,7 @@ internal static class CookbookMarkdown
         foreach (var g in groups)
         {
             sb.Append("## ").Append(g.Title).Append("\n\n");
+            if (g.Intro.Length > 0) sb.Append(g.Intro).Append("\n\n");
             sb.Append("From `").Append(RelativeName(g.File, dslName)).Append("`.\n\n");
             sb.Append("| macro | additions | multiplications | divisions | functions | hand formula |\n| --- | ---: | ---: | ---: | ---: | --- |\n");
             foreach (var e in g.Entries)

@@ -62,10 +62,10 @@ public sealed class Cookbook_Current
         Assert.Equal(1, exit);
         Assert.Contains("error GMAC0005: macro 'Swap' has no cookbook group", err);
 
-        temp.Write("lib.gmac", "// cookbook group 1: Vectors\n" + Library + "\n// Swaps the coordinates.\n// cookbook hand: (y, x)\n" + Macro);
+        temp.Write("lib.gmac", "// cookbook group 1: Vectors\n// Of the plane.\n\n" + Library + "\n// Swaps the coordinates.\n// cookbook hand: (y, x)\n" + Macro);
         (exit, var output, err) = Tool.Run("cookbook", "--dsl", temp.Path);
         Assert.True(exit == 0, err);
-        Assert.Contains("## Vectors", output);
+        Assert.Contains("## Vectors\n\nOf the plane.\n", output);
         Assert.Contains("Swaps the coordinates.", output);
         Assert.Contains("//GMac.Bind(\"u\", \"V\", u);", output);
         Assert.Contains("By hand: (y, x)", output);
