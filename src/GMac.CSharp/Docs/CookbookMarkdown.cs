@@ -16,7 +16,7 @@ internal static class CookbookMarkdown
         var sb = new StringBuilder();
         var count = groups.Sum(g => g.Entries.Count);
         sb.Append("# Cookbook\n\n");
-        sb.Append(Invariant($"The {count} macros of the GMacDSL library (`{dslName}/`), grouped by use. For each: what it computes, its inputs and outputs, "));
+        sb.Append(Invariant($"The {Count(count, "macro")} of the GMacDSL library (`{dslName}/`), grouped by use. For each: what it computes, its inputs and outputs, "));
         sb.Append("the binding point you write in a C# file to use it (through the library's class bindings where one fits), and the operations of the code ");
         sb.Append("`gmac generate` writes for that binding point: additions (a subtraction counts as one), multiplications, divisions and function calls ");
         sb.Append("(`Math.Sqrt`, `Math.Sin`, …), counted as `gmac show --stats` counts them. Where a hand-written formula does the same job, it is given ");
