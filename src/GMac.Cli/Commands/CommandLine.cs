@@ -16,6 +16,7 @@ internal static class CommandLine
             CheckCommand.Create(),
             ShowCommand.Create(),
             VerifyCommand.Create(),
+            CookbookCommand.Create(),
             LspCommand.Create(),
         };
 

@@ -15,6 +15,7 @@ public static class DiagnosticCodes
     public static readonly DiagnosticDescriptor NestingTooDeep = new("GMAC0002", Error, "an expression is nested too deeply to read", ReportedBy.DslLoad);
     public static readonly DiagnosticDescriptor CannotReadDsl = new("GMAC0003", Error, "the DSL folder or one of its files cannot be read, or it holds no .gmac file", ReportedBy.DslLoad);
     public static readonly DiagnosticDescriptor FileTooLarge = new("GMAC0004", Error, "a DSL file has more tokens than gmac reads from one file", ReportedBy.DslLoad);
+    public static readonly DiagnosticDescriptor CookbookAnnotation = new("GMAC0005", Error, "a cookbook annotation of the DSL is malformed, names what the DSL does not define, or shows a binding point that does not generate", ReportedBy.Cookbook);
 
     // ---- names
     public static readonly DiagnosticDescriptor UnknownName = new("GMAC0101", Error, "a name is not defined (a close match is suggested)", ReportedBy.DslLoad);

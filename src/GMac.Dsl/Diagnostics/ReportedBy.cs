@@ -10,6 +10,9 @@ public enum ReportedBy
     Verify = 8,
     Build = 16,
 
+    /// <summary><c>gmac cookbook</c>, which writes docs/cookbook.md from the library's macros and their annotations.</summary>
+    Cookbook = 32,
+
     /// <summary>Errors in the DSL folder: every command loads it first.</summary>
     DslLoad = Check | Generate | Show | Verify | Build,
 

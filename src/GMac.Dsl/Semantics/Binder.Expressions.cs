@@ -39,6 +39,9 @@ internal sealed partial class Binder
     private static readonly string[] OtherBuiltins =
         ["exp", "grade", "apply", "scale", "div_by_scalar", "diff", "cast_to_grades", "cast_to_subspace", "cast_to_class", "pi"];
 
+    /// <summary>Every name a macro can call as a built-in function or operator (documented in docs/language.md; a test keeps them there).</summary>
+    internal static IEnumerable<string> BuiltinNames => ScalarFunctions.Keys.Concat(UnaryOperators.Keys).Concat(OtherBuiltins).Distinct(StringComparer.Ordinal);
+
     private static int AllGrades(FrameSymbol frame) => (1 << (frame.Dimension + 1)) - 1;
 
     private BoundExpression? BindExpression(ExprContext syntax, Scope scope)

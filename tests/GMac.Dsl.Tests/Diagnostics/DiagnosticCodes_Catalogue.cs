@@ -76,7 +76,7 @@ public sealed class DiagnosticCodes_Catalogue
         (ReportedBy Flag, string Name)[] names =
         [
             (ReportedBy.Check, "check"), (ReportedBy.Generate, "generate"), (ReportedBy.Show, "show"),
-            (ReportedBy.Verify, "verify"), (ReportedBy.Build, "MSBuild"),
+            (ReportedBy.Verify, "verify"), (ReportedBy.Build, "MSBuild"), (ReportedBy.Cookbook, "cookbook"),
         ];
         return string.Join(", ", names.Where(n => reportedBy.HasFlag(n.Flag)).Select(n => n.Name));
     }
