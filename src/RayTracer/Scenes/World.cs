@@ -1,6 +1,7 @@
 using RayTracer.Bounds;
 using RayTracer.Colors;
 using RayTracer.Geometry;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Maths;
 using RayTracer.Textures;
@@ -29,7 +30,8 @@ public class World
 
     public Camera? Camera { get; set; }
 
-    public Tracer? Tracer { get; set; }
+    /// <summary>The light transport algorithm: it traces the rays and samples the lights.</summary>
+    public Integrator? Integrator { get; set; }
 
     /// <summary>
     /// Hits nearer than this along a ray from a surface (or the eye) are ignored, against rounding
@@ -80,7 +82,7 @@ public class World
     {
         RayStatistics.CountRay();
         sr.Reset();
-        sr.World = this;
+        sr.RayEpsilon = RayEpsilon;
         var tmin = MathConstants.HugeValue;
         Normal3D normal = default;
         Point3D local = default;
