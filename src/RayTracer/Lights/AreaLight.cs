@@ -59,7 +59,7 @@ public sealed class AreaLight : Light
     {
         var s = _sample.Value!;
         var distance = (s.Point - ray.o).Dot(ray.d);
-        return distance * (1 - 1e-9);
+        return distance * (1 - Tolerances.ShadowRayShortening);
     }
 
     public override RGBColor L(ShadingRecord sr)

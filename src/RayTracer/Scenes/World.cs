@@ -59,8 +59,8 @@ public class World
             return;
         var size = Math.Max(box.Diagonal.x, Math.Max(box.Diagonal.y, box.Diagonal.z));
         var reach = Math.Max(MaxAbs(box.Min), MaxAbs(box.Max));
-        // Doubles carry 16 digits: 1e-12 of the coordinates leaves a wide margin over their rounding.
-        var epsilon = Math.Max(MathConstants.Epsilon * size, 1e-12 * reach);
+        // Doubles carry 16 digits: a relative 1e-12 of the coordinates leaves a wide margin over their rounding.
+        var epsilon = Math.Max(MathConstants.Epsilon * size, Tolerances.RelativeRounding * reach);
         if (epsilon > 0 && double.IsFinite(epsilon))
             RayEpsilon = epsilon;
     }

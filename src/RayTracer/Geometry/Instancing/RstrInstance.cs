@@ -95,7 +95,7 @@ public sealed class RstrInstance : GeometricObject
             var moved = MirrorLocal(new Vector3D(p.x, p.y, p.z));
             return new Point3D(_px + moved.x, _py + moved.y, _pz + moved.z);
         });
-        return box.IsEmpty || !box.IsFinite ? box : box.Expanded(1e-9);
+        return box.IsEmpty || !box.IsFinite ? box : box.Expanded(Tolerances.BoundsPadding);
     }
 
     private Vector3D MirrorLocal(Vector3D x)

@@ -85,7 +85,7 @@ public sealed class TsrInstance : GeometricObject
     public override BoundingBox GetBoundingBox()
     {
         var box = Target.GetBoundingBox().Map(_tsr.ToWorld);
-        return box.IsEmpty || !box.IsFinite ? box : box.Expanded(1e-9 * (1 + _tsr.scale));
+        return box.IsEmpty || !box.IsFinite ? box : box.Expanded(Tolerances.BoundsPadding * (1 + _tsr.scale));
     }
 
     private Ray ToLocal(in Ray ray)

@@ -122,7 +122,7 @@ public readonly struct TsrTransform
     // The rotor taking unit a onto unit b; when b = −a, the half turn about the unit `perpendicular` (⟂ a).
     private static Rotor3D RotorOntoOrHalfTurn(Vector3D a, Vector3D b, Vector3D perpendicular)
     {
-        if (Vector3D.Dot(a, b) > -1 + 1e-12)
+        if (Vector3D.Dot(a, b) > -1 + Tolerances.RelativeRounding)
             return OrientationKernels.RotorOnto(a, b);
         var axis = perpendicular - Vector3D.Dot(perpendicular, a) * a;
         return OrientationKernels.HalfTurn(axis.Normalized());
