@@ -96,10 +96,6 @@ public readonly struct TsrTransform
         return new(origin, axis, radians, 0.5 * (sx + sy));
     }
 
-    /// <summary>The same map as a 4×4 matrix transform (translation · rotation · scale).</summary>
-    public AffineTransform ToAffineTransform() =>
-        AffineTransform.Translation(tx, ty, tz) * AffineTransform.Rotation(Axis, angle) * AffineTransform.Scaling(scale);
-
     /// <summary>t + s R(p), with Rodrigues' formula; used for bounds, not per ray.</summary>
     public Point3D ToWorld(Point3D p)
     {
