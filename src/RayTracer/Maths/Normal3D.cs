@@ -6,7 +6,7 @@ namespace RayTracer.Maths;
 /// A surface normal. Kept distinct from <see cref="Vector3D"/> because affine maps transform
 /// normals with the inverse transpose, not with the matrix itself.
 /// </summary>
-public struct Normal3D : IEquatable<Normal3D>
+public struct Normal3D : ITuple3<Normal3D>
 {
     public double x;
     public double y;
@@ -26,8 +26,8 @@ public struct Normal3D : IEquatable<Normal3D>
     public static Normal3D operator -(Normal3D n) => new(-n.x, -n.y, -n.z);
     public static Normal3D operator +(Normal3D a, Normal3D b) => new(a.x + b.x, a.y + b.y, a.z + b.z);
     public static Normal3D operator -(Normal3D a, Normal3D b) => new(a.x - b.x, a.y - b.y, a.z - b.z);
-    public static Normal3D operator *(Normal3D n, double s) => new(n.x * s, n.y * s, n.z * s);
-    public static Normal3D operator *(double s, Normal3D n) => new(n.x * s, n.y * s, n.z * s);
+    public static Normal3D operator *(Normal3D n, double s) => Tuple3.Scale(n, s);
+    public static Normal3D operator *(double s, Normal3D n) => Tuple3.Scale(n, s);
     public static Vector3D operator +(Normal3D n, Vector3D v) => new(n.x + v.x, n.y + v.y, n.z + v.z);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -36,31 +36,25 @@ public struct Normal3D : IEquatable<Normal3D>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public readonly double Dot(Normal3D n) => x * n.x + y * n.y + z * n.z;
 
-    public readonly double LengthSquared => x * x + y * y + z * z;
-    public readonly double Length => Math.Sqrt(x * x + y * y + z * z);
+    public readonly double LengthSquared => Tuple3.LengthSquared(this);
+    public readonly double Length => Math.Sqrt(LengthSquared);
 
-    public readonly Normal3D Normalized()
-    {
-        double inv = 1.0 / Math.Sqrt(x * x + y * y + z * z);
-        return new(x * inv, y * inv, z * inv);
-    }
+    public readonly Normal3D Normalized() => Tuple3.Normalized(this);
 
-    public void Normalize()
-    {
-        double inv = 1.0 / Math.Sqrt(x * x + y * y + z * z);
-        x *= inv;
-        y *= inv;
-        z *= inv;
-    }
+    public void Normalize() => this = Normalized();
 
     public readonly Vector3D ToVector() => new(x, y, z);
 
     public static explicit operator Normal3D(Vector3D v) => new(v.x, v.y, v.z);
 
-    public readonly bool Equals(Normal3D other) => x == other.x && y == other.y && z == other.z;
+    static Normal3D ITuple3<Normal3D>.Create(double first, double second, double third) => new(first, second, third);
+
+    public readonly (double First, double Second, double Third) Components => (x, y, z);
+
+    public readonly bool Equals(Normal3D other) => Tuple3.Equal(this, other);
     public override readonly bool Equals(object? obj) => obj is Normal3D n && Equals(n);
-    public override readonly int GetHashCode() => HashCode.Combine(x, y, z);
+    public override readonly int GetHashCode() => Tuple3.Hash(this);
     public static bool operator ==(Normal3D a, Normal3D b) => a.Equals(b);
     public static bool operator !=(Normal3D a, Normal3D b) => !a.Equals(b);
-    public override readonly string ToString() => FormattableString.Invariant($"<{x}, {y}, {z}>");
+    public override readonly string ToString() => Tuple3.Format(this, "<", ">");
 }

@@ -3,7 +3,7 @@ using System.Runtime.CompilerServices;
 namespace RayTracer.Maths;
 
 /// <summary>A direction or displacement in 3D space.</summary>
-public struct Vector3D : IEquatable<Vector3D>
+public struct Vector3D : ITuple3<Vector3D>
 {
     public double x;
     public double y;
@@ -34,13 +34,9 @@ public struct Vector3D : IEquatable<Vector3D>
     public static Vector3D operator +(Vector3D a, Vector3D b) => new(a.x + b.x, a.y + b.y, a.z + b.z);
     public static Vector3D operator -(Vector3D a, Vector3D b) => new(a.x - b.x, a.y - b.y, a.z - b.z);
     public static Vector3D operator -(Vector3D a) => new(-a.x, -a.y, -a.z);
-    public static Vector3D operator *(Vector3D a, double s) => new(a.x * s, a.y * s, a.z * s);
-    public static Vector3D operator *(double s, Vector3D a) => new(a.x * s, a.y * s, a.z * s);
-    public static Vector3D operator /(Vector3D a, double s)
-    {
-        double inv = 1.0 / s;
-        return new(a.x * inv, a.y * inv, a.z * inv);
-    }
+    public static Vector3D operator *(Vector3D a, double s) => Tuple3.Scale(a, s);
+    public static Vector3D operator *(double s, Vector3D a) => Tuple3.Scale(a, s);
+    public static Vector3D operator /(Vector3D a, double s) => Tuple3.Divide(a, s);
 
     public static Vector3D operator +(Vector3D a, Normal3D n) => new(a.x + n.x, a.y + n.y, a.z + n.z);
 
@@ -58,32 +54,26 @@ public struct Vector3D : IEquatable<Vector3D>
     public readonly double Dot(Normal3D n) => Dot(this, n);
     public readonly Vector3D Cross(Vector3D b) => Cross(this, b);
 
-    public readonly double LengthSquared => x * x + y * y + z * z;
-    public readonly double Length => Math.Sqrt(x * x + y * y + z * z);
+    public readonly double LengthSquared => Tuple3.LengthSquared(this);
+    public readonly double Length => Math.Sqrt(LengthSquared);
 
     /// <summary>Unit vector with the same direction (the "hat" of Suffern's code).</summary>
-    public readonly Vector3D Normalized()
-    {
-        double inv = 1.0 / Math.Sqrt(x * x + y * y + z * z);
-        return new(x * inv, y * inv, z * inv);
-    }
+    public readonly Vector3D Normalized() => Tuple3.Normalized(this);
 
     /// <summary>Normalizes in place.</summary>
-    public void Normalize()
-    {
-        double inv = 1.0 / Math.Sqrt(x * x + y * y + z * z);
-        x *= inv;
-        y *= inv;
-        z *= inv;
-    }
+    public void Normalize() => this = Normalized();
 
     public static explicit operator Vector3D(Normal3D n) => new(n.x, n.y, n.z);
     public static explicit operator Vector3D(Point3D p) => new(p.x, p.y, p.z);
 
-    public readonly bool Equals(Vector3D other) => x == other.x && y == other.y && z == other.z;
+    static Vector3D ITuple3<Vector3D>.Create(double first, double second, double third) => new(first, second, third);
+
+    public readonly (double First, double Second, double Third) Components => (x, y, z);
+
+    public readonly bool Equals(Vector3D other) => Tuple3.Equal(this, other);
     public override readonly bool Equals(object? obj) => obj is Vector3D v && Equals(v);
-    public override readonly int GetHashCode() => HashCode.Combine(x, y, z);
+    public override readonly int GetHashCode() => Tuple3.Hash(this);
     public static bool operator ==(Vector3D a, Vector3D b) => a.Equals(b);
     public static bool operator !=(Vector3D a, Vector3D b) => !a.Equals(b);
-    public override readonly string ToString() => FormattableString.Invariant($"[{x}, {y}, {z}]");
+    public override readonly string ToString() => Tuple3.Format(this, "[", "]");
 }
