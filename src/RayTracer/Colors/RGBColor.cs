@@ -26,9 +26,13 @@ public struct RGBColor : ITuple3<RGBColor>
     public static RGBColor operator +(RGBColor a, RGBColor c) => new(a.r + c.r, a.g + c.g, a.b + c.b);
     public static RGBColor operator -(RGBColor a, RGBColor c) => new(a.r - c.r, a.g - c.g, a.b - c.b);
     public static RGBColor operator *(RGBColor a, RGBColor c) => new(a.r * c.r, a.g * c.g, a.b * c.b);
-    public static RGBColor operator *(RGBColor a, double s) => Tuple3.Scale(a, s);
-    public static RGBColor operator *(double s, RGBColor a) => Tuple3.Scale(a, s);
-    public static RGBColor operator /(RGBColor a, double s) => Tuple3.Divide(a, s);
+    public static RGBColor operator *(RGBColor a, double s) => new(a.r * s, a.g * s, a.b * s);
+    public static RGBColor operator *(double s, RGBColor a) => new(a.r * s, a.g * s, a.b * s);
+    public static RGBColor operator /(RGBColor a, double s)
+    {
+        double inv = 1.0 / s;
+        return new(a.r * inv, a.g * inv, a.b * inv);
+    }
 
     /// <summary>Raises each component to <paramref name="p"/> (gamma correction).</summary>
     public readonly RGBColor Pow(double p) => new(Math.Pow(r, p), Math.Pow(g, p), Math.Pow(b, p));

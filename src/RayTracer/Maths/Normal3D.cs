@@ -26,8 +26,8 @@ public struct Normal3D : ITuple3<Normal3D>
     public static Normal3D operator -(Normal3D n) => new(-n.x, -n.y, -n.z);
     public static Normal3D operator +(Normal3D a, Normal3D b) => new(a.x + b.x, a.y + b.y, a.z + b.z);
     public static Normal3D operator -(Normal3D a, Normal3D b) => new(a.x - b.x, a.y - b.y, a.z - b.z);
-    public static Normal3D operator *(Normal3D n, double s) => Tuple3.Scale(n, s);
-    public static Normal3D operator *(double s, Normal3D n) => Tuple3.Scale(n, s);
+    public static Normal3D operator *(Normal3D n, double s) => new(n.x * s, n.y * s, n.z * s);
+    public static Normal3D operator *(double s, Normal3D n) => new(n.x * s, n.y * s, n.z * s);
     public static Vector3D operator +(Normal3D n, Vector3D v) => new(n.x + v.x, n.y + v.y, n.z + v.z);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -36,12 +36,22 @@ public struct Normal3D : ITuple3<Normal3D>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public readonly double Dot(Normal3D n) => x * n.x + y * n.y + z * n.z;
 
-    public readonly double LengthSquared => Tuple3.LengthSquared(this);
-    public readonly double Length => Math.Sqrt(LengthSquared);
+    public readonly double LengthSquared => x * x + y * y + z * z;
+    public readonly double Length => Math.Sqrt(x * x + y * y + z * z);
 
-    public readonly Normal3D Normalized() => Tuple3.Normalized(this);
+    public readonly Normal3D Normalized()
+    {
+        double inv = 1.0 / Math.Sqrt(x * x + y * y + z * z);
+        return new(x * inv, y * inv, z * inv);
+    }
 
-    public void Normalize() => this = Normalized();
+    public void Normalize()
+    {
+        double inv = 1.0 / Math.Sqrt(x * x + y * y + z * z);
+        x *= inv;
+        y *= inv;
+        z *= inv;
+    }
 
     public readonly Vector3D ToVector() => new(x, y, z);
 

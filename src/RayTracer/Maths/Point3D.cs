@@ -32,8 +32,8 @@ public struct Point3D : ITuple3<Point3D>
     public static Vector3D operator -(Point3D a, Point3D b) => new(a.x - b.x, a.y - b.y, a.z - b.z);
     public static Point3D operator +(Point3D p, Vector3D v) => new(p.x + v.x, p.y + v.y, p.z + v.z);
     public static Point3D operator -(Point3D p, Vector3D v) => new(p.x - v.x, p.y - v.y, p.z - v.z);
-    public static Point3D operator *(Point3D p, double s) => Tuple3.Scale(p, s);
-    public static Point3D operator *(double s, Point3D p) => Tuple3.Scale(p, s);
+    public static Point3D operator *(Point3D p, double s) => new(p.x * s, p.y * s, p.z * s);
+    public static Point3D operator *(double s, Point3D p) => new(p.x * s, p.y * s, p.z * s);
     public static Point3D operator -(Point3D p) => new(-p.x, -p.y, -p.z);
 
     public readonly double DistanceSquared(Point3D p)

@@ -34,9 +34,13 @@ public struct Vector3D : ITuple3<Vector3D>
     public static Vector3D operator +(Vector3D a, Vector3D b) => new(a.x + b.x, a.y + b.y, a.z + b.z);
     public static Vector3D operator -(Vector3D a, Vector3D b) => new(a.x - b.x, a.y - b.y, a.z - b.z);
     public static Vector3D operator -(Vector3D a) => new(-a.x, -a.y, -a.z);
-    public static Vector3D operator *(Vector3D a, double s) => Tuple3.Scale(a, s);
-    public static Vector3D operator *(double s, Vector3D a) => Tuple3.Scale(a, s);
-    public static Vector3D operator /(Vector3D a, double s) => Tuple3.Divide(a, s);
+    public static Vector3D operator *(Vector3D a, double s) => new(a.x * s, a.y * s, a.z * s);
+    public static Vector3D operator *(double s, Vector3D a) => new(a.x * s, a.y * s, a.z * s);
+    public static Vector3D operator /(Vector3D a, double s)
+    {
+        double inv = 1.0 / s;
+        return new(a.x * inv, a.y * inv, a.z * inv);
+    }
 
     public static Vector3D operator +(Vector3D a, Normal3D n) => new(a.x + n.x, a.y + n.y, a.z + n.z);
 
@@ -54,14 +58,24 @@ public struct Vector3D : ITuple3<Vector3D>
     public readonly double Dot(Normal3D n) => Dot(this, n);
     public readonly Vector3D Cross(Vector3D b) => Cross(this, b);
 
-    public readonly double LengthSquared => Tuple3.LengthSquared(this);
-    public readonly double Length => Math.Sqrt(LengthSquared);
+    public readonly double LengthSquared => x * x + y * y + z * z;
+    public readonly double Length => Math.Sqrt(x * x + y * y + z * z);
 
     /// <summary>Unit vector with the same direction (the "hat" of Suffern's code).</summary>
-    public readonly Vector3D Normalized() => Tuple3.Normalized(this);
+    public readonly Vector3D Normalized()
+    {
+        double inv = 1.0 / Math.Sqrt(x * x + y * y + z * z);
+        return new(x * inv, y * inv, z * inv);
+    }
 
     /// <summary>Normalizes in place.</summary>
-    public void Normalize() => this = Normalized();
+    public void Normalize()
+    {
+        double inv = 1.0 / Math.Sqrt(x * x + y * y + z * z);
+        x *= inv;
+        y *= inv;
+        z *= inv;
+    }
 
     public static explicit operator Vector3D(Normal3D n) => new(n.x, n.y, n.z);
     public static explicit operator Vector3D(Point3D p) => new(p.x, p.y, p.z);
