@@ -35,6 +35,7 @@ public static class Application
             ListCommand(stdout),
             RenderCommand.Create(stdout, stderr, interactiveProgress),
             BenchCommand.Create(stdout, stderr),
+            SnapshotCommand.Create(stdout, stderr),
             Experiments.ExperimentsCommand.Create(stdout, stderr),
         };
 

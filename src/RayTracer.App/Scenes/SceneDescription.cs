@@ -1,4 +1,5 @@
 using RayTracer.Geometry;
+using RayTracer.Integrators;
 using RayTracer.Materials;
 using RayTracer.Viewing;
 
@@ -44,7 +45,7 @@ public abstract class SceneDescription
         world.ViewPlane.SetSamples(settings.SamplesPerPixel ?? DefaultSamples);
         Populate(world);
         world.FitRayEpsilon();
-        if (world.Camera is null || world.Tracer is null)
+        if (world.Camera is null || world.Integrator is null)
             throw new InvalidOperationException($"Scene '{Name}' did not set a camera and a tracer.");
         return world;
     }

@@ -21,6 +21,9 @@ public abstract class BRDF
         return RGBColor.Black;
     }
 
+    /// <summary>Density (solid angle) with which <see cref="SampleF"/> draws <paramref name="wi"/>; 0 for delta distributions.</summary>
+    public virtual double Pdf(ShadingRecord sr, Vector3D wo, Vector3D wi) => 0.0;
+
     /// <summary>Hemispherical-directional reflectance (the fraction of uniform incident light reflected).</summary>
     public virtual RGBColor Rho(ShadingRecord sr, Vector3D wo) => RGBColor.Black;
 }

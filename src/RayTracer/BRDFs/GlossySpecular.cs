@@ -62,6 +62,14 @@ public sealed class GlossySpecular : BRDF
         return rdotwo > 0 ? Ks * Math.Pow(rdotwo, Exponent) * Color.GetValue(sr) : RGBColor.Black;
     }
 
+    /// <summary>The density of <see cref="SampleF"/>: lobe·(n·wi), unnormalised as in <see cref="SampleF"/>.</summary>
+    public override double Pdf(ShadingRecord sr, Vector3D wo, Vector3D wi)
+    {
+        var n = sr.Normal;
+        var r = -wo + 2.0 * n.Dot(wo) * n.ToVector();
+        return Math.Pow(Math.Max(0, r.Dot(wi)), Exponent) * Math.Max(0, n.Dot(wi));
+    }
+
     public override RGBColor SampleF(ShadingRecord sr, Vector3D wo, out Vector3D wi, out double pdf)
     {
         var n = sr.Normal;

@@ -60,5 +60,7 @@ public sealed class Lambertian : BRDF
         return Kd * MathConstants.InvPi * Color.GetValue(sr);
     }
 
+    public override double Pdf(ShadingRecord sr, Vector3D wo, Vector3D wi) => Math.Max(0, sr.Normal.Dot(wi)) * MathConstants.InvPi;
+
     public override RGBColor Rho(ShadingRecord sr, Vector3D wo) => Kd * Color.GetValue(sr);
 }

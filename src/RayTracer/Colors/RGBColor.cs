@@ -1,7 +1,9 @@
+using RayTracer.Maths;
+
 namespace RayTracer.Colors;
 
-/// <summary>Linear RGB radiance or reflectance.</summary>
-public struct RGBColor : IEquatable<RGBColor>
+/// <summary>Linear RGB radiance or reflectance; colours multiply channel by channel.</summary>
+public struct RGBColor : ITuple3<RGBColor>
 {
     public double r;
     public double g;
@@ -38,10 +40,14 @@ public struct RGBColor : IEquatable<RGBColor>
     public readonly double Average => (r + g + b) / 3.0;
     public readonly double MaxComponent => Math.Max(r, Math.Max(g, b));
 
-    public readonly bool Equals(RGBColor other) => r == other.r && g == other.g && b == other.b;
+    static RGBColor ITuple3<RGBColor>.Create(double first, double second, double third) => new(first, second, third);
+
+    public readonly (double First, double Second, double Third) Components => (r, g, b);
+
+    public readonly bool Equals(RGBColor other) => Tuple3.Equal(this, other);
     public override readonly bool Equals(object? obj) => obj is RGBColor c && Equals(c);
-    public override readonly int GetHashCode() => HashCode.Combine(r, g, b);
+    public override readonly int GetHashCode() => Tuple3.Hash(this);
     public static bool operator ==(RGBColor a, RGBColor c) => a.Equals(c);
     public static bool operator !=(RGBColor a, RGBColor c) => !a.Equals(c);
-    public override readonly string ToString() => FormattableString.Invariant($"rgb({r}, {g}, {b})");
+    public override readonly string ToString() => Tuple3.Format(this, "rgb(", ")");
 }

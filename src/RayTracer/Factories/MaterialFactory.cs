@@ -22,11 +22,7 @@ public static class MaterialFactory
     public static GlossyReflector Glossy(RGBColor tint, double exponent = 100, double kr = 0.8) =>
         new(0.05, 0.1, tint, 0.0, exponent, kr, tint);
 
-    public static Transparent SimpleGlass(double ior = 1.5) => new(ior: ior);
-
     public static Dielectric Glass(RGBColor? filterInside = null, double ior = 1.5) => new(ior, 1.0, filterInside);
-
-    public static Dielectric Water() => new(1.33, 1.0, new RGBColor(0.85, 0.95, 1.0));
 
     public static Emissive Light(double radiance, RGBColor? color = null) => new(radiance, color ?? RGBColor.White);
 }

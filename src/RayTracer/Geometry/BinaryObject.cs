@@ -53,7 +53,7 @@ public sealed class BinaryObject : GeometricObject
     /// <summary>First crossing whose point passes the mask; <paramref name="accepted"/> is the query ray that found it.</summary>
     private bool Solve(in Ray ray, out double tmin, out Ray accepted)
     {
-        var sr = _scratch ??= new ShadingRecord(null);
+        var sr = _scratch ??= new ShadingRecord();
         double offset = 0;
         var current = ray;
         for (int i = 0; i < MaxSurfaceCrossings; i++)

@@ -29,7 +29,7 @@ public abstract class GeometricObject
     /// Nearest hit distance only. Acceleration structures call this while traversing and call
     /// <see cref="Hit"/> once for the winner. Primitives override it with a cheaper test.
     /// </summary>
-    public virtual bool Intersect(in Ray ray, out double t) => Hit(ray, out t, _scratch ??= new ShadingRecord(null));
+    public virtual bool Intersect(in Ray ray, out double t) => Hit(ray, out t, _scratch ??= new ShadingRecord());
 
     /// <summary>Hit with t greater than epsilon for shadow rays; false when the object casts no shadows.</summary>
     public virtual bool ShadowHit(in Ray ray, out double tmin)

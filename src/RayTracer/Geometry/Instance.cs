@@ -1,5 +1,4 @@
 using RayTracer.Bounds;
-using RayTracer.Materials;
 using RayTracer.Maths;
 using RayTracer.Tracing;
 using RayTracer.Transforms;
@@ -11,17 +10,13 @@ namespace RayTracer.Geometry;
 /// inverse transform (t is the same on both rays because the direction is not renormalized), and
 /// the normal is mapped back with the inverse transpose.
 /// </summary>
-public sealed class Instance : GeometricObject
+public sealed class Instance : TransformedObject
 {
-    private Material? _material;
-
     public Instance(GeometricObject target, AffineTransform? transform = null)
+        : base(target)
     {
-        Target = target ?? throw new ArgumentNullException(nameof(target));
         Transform = transform ?? AffineTransform.Identity;
     }
-
-    public GeometricObject Target { get; }
 
     /// <summary>Object-to-world transform.</summary>
     public AffineTransform Transform { get; set; }
@@ -31,13 +26,6 @@ public sealed class Instance : GeometricObject
     /// when false the local hit point is the world-space hit point.
     /// </summary>
     public bool TransformTexture { get; set; } = true;
-
-    /// <summary>Overrides the target's material when set.</summary>
-    public override Material? Material
-    {
-        get => _material ?? Target.Material;
-        set => _material = value;
-    }
 
     public Instance Translate(double dx, double dy, double dz) => Apply(AffineTransform.Translation(dx, dy, dz));
 
@@ -58,39 +46,14 @@ public sealed class Instance : GeometricObject
         return this;
     }
 
-    public override bool Intersect(in Ray ray, out double t) =>
-        Target.Intersect(Transform.InverseTransformRay(ray), out t);
+    protected override Ray ToLocal(in Ray ray) => Transform.InverseTransformRay(ray);
 
-    public override bool ShadowHit(in Ray ray, out double tmin)
+    protected override Normal3D NormalToWorld(Normal3D n) => Transform.TransformNormal(n).Normalized();
+
+    protected override void CompleteHit(in Ray ray, double tmin, ShadingRecord sr)
     {
-        if (!CastsShadows)
-        {
-            tmin = 0;
-            return false;
-        }
-
-        return Target.ShadowHit(Transform.InverseTransformRay(ray), out tmin);
-    }
-
-    public override bool Hit(in Ray ray, out double tmin, ShadingRecord sr)
-    {
-        if (!Target.Hit(Transform.InverseTransformRay(ray), out tmin, sr))
-        {
-            return false;
-        }
-
-        sr.Normal = Transform.TransformNormal(sr.Normal).Normalized();
-        if (_material is not null)
-        {
-            sr.Material = _material;
-        }
-
         if (!TransformTexture)
-        {
             sr.LocalHitPoint = ray.At(tmin);
-        }
-
-        return true;
     }
 
     public override BoundingBox GetBoundingBox() => Transform.TransformBox(Target.GetBoundingBox());

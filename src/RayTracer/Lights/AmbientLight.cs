@@ -20,6 +20,4 @@ public sealed class AmbientLight : Light
     public override Vector3D GetDirection(ShadingRecord sr) => Vector3D.Zero;
 
     public override RGBColor L(ShadingRecord sr) => RadianceScale * Color;
-
-    public override bool InShadow(in Ray ray, ShadingRecord sr) => false;
 }

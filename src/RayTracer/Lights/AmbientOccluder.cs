@@ -43,14 +43,11 @@ public sealed class AmbientOccluder : Light
         return s.x * u + s.y * v + s.z * w;
     }
 
-    public override bool InShadow(in Ray ray, ShadingRecord sr) =>
-        sr.World is { } world && world.ShadowHit(ray, MathConstants.HugeValue);
+    public override bool SamplesVisibility => true;
 
-    public override RGBColor L(ShadingRecord sr)
-    {
-        var direction = GetDirection(sr);
-        var shadowRay = sr.SpawnRay(direction);
-        var scale = CastsShadows && InShadow(shadowRay, sr) ? MinAmount : 1.0;
-        return scale * RadianceScale * Color;
-    }
+    /// <summary>Radiance where the sampled direction is open.</summary>
+    public override RGBColor L(ShadingRecord sr) => RadianceScale * Color;
+
+    /// <summary>Radiance where the sampled direction is blocked: <see cref="MinAmount"/> of it.</summary>
+    public override RGBColor ShadowedL(ShadingRecord sr) => MinAmount * RadianceScale * Color;
 }

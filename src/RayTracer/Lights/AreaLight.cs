@@ -54,12 +54,12 @@ public sealed class AreaLight : Light
         return s.Wi;
     }
 
-    public override bool InShadow(in Ray ray, ShadingRecord sr)
+    /// <summary>The distance to the sampled point, shortened a little so the light's own surface does not shadow itself.</summary>
+    public override double ShadowDistance(in Ray ray)
     {
         var s = _sample.Value!;
         var distance = (s.Point - ray.o).Dot(ray.d);
-        // Shorten the test a little so the light's own surface does not shadow itself.
-        return sr.World is { } world && world.ShadowHit(ray, distance * (1 - 1e-9));
+        return distance * (1 - Tolerances.ShadowRayShortening);
     }
 
     public override RGBColor L(ShadingRecord sr)

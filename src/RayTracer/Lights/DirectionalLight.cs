@@ -30,6 +30,4 @@ public sealed class DirectionalLight : Light
 
     public override RGBColor L(ShadingRecord sr) => RadianceScale * Color;
 
-    public override bool InShadow(in Ray ray, ShadingRecord sr) =>
-        sr.World is { } world && world.ShadowHit(ray, MathConstants.HugeValue);
 }

@@ -38,8 +38,6 @@ public sealed class EnvironmentLight : Light
 
     public override RGBColor L(ShadingRecord sr) => RadianceScale * Color;
 
-    public override bool InShadow(in Ray ray, ShadingRecord sr) =>
-        sr.World is { } world && world.ShadowHit(ray, MathConstants.HugeValue);
 
     public override double Pdf(ShadingRecord sr) => Math.Max(0, sr.Normal.Dot(sr.Direction)) * MathConstants.InvPi;
 }

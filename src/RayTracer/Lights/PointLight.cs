@@ -30,6 +30,5 @@ public sealed class PointLight : Light
         return FalloffPower == 0 ? radiance : radiance / Math.Pow(Location.Distance(sr.HitPoint), FalloffPower);
     }
 
-    public override bool InShadow(in Ray ray, ShadingRecord sr) =>
-        sr.World is { } world && world.ShadowHit(ray, Location.Distance(ray.o));
+    public override double ShadowDistance(in Ray ray) => Location.Distance(ray.o);
 }

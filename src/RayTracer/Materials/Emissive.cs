@@ -6,7 +6,7 @@ namespace RayTracer.Materials;
 
 /// <summary>
 /// A light-emitting surface: radiance ls·ce from its front side (the side the normal points to),
-/// black from behind. The colour may come from a texture.
+/// black from behind. The colour may come from a texture. It scatters nothing.
 /// </summary>
 public class Emissive : Material
 {
@@ -29,11 +29,6 @@ public class Emissive : Material
 
     public override RGBColor GetLe(ShadingRecord sr) => RadianceScale * Color.GetValue(sr);
 
-    public override RGBColor Shade(ShadingRecord sr) =>
+    public override RGBColor Emitted(ShadingRecord sr) =>
         !OneSided || -sr.Normal.Dot(sr.Ray.d) > 0 ? GetLe(sr) : RGBColor.Black;
-
-    public override RGBColor PathShade(ShadingRecord sr) => Shade(sr);
-
-    /// <summary>The first diffuse bounce already sampled this light explicitly; seeing it again would double it.</summary>
-    public override RGBColor GlobalShade(ShadingRecord sr) => sr.Depth == 1 ? RGBColor.Black : Shade(sr);
 }

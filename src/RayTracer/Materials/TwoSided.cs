@@ -11,13 +11,13 @@ public sealed class TwoSided(Material inner) : Material
 {
     public Material Inner { get; } = inner;
 
-    public override RGBColor Shade(ShadingRecord sr) => Inner.Shade(FaceViewer(sr));
+    public override Bsdf GetBsdf(ShadingRecord sr) => Inner.GetBsdf(FaceViewer(sr));
 
-    public override RGBColor AreaLightShade(ShadingRecord sr) => Inner.AreaLightShade(FaceViewer(sr));
+    public override RGBColor Emitted(ShadingRecord sr) => Inner.Emitted(FaceViewer(sr));
 
-    public override RGBColor PathShade(ShadingRecord sr) => Inner.PathShade(FaceViewer(sr));
+    public override RGBColor GetLe(ShadingRecord sr) => Inner.GetLe(sr);
 
-    public override RGBColor GlobalShade(ShadingRecord sr) => Inner.GlobalShade(FaceViewer(sr));
+    public override RGBColor AmbientReflectance(ShadingRecord sr) => Inner.AmbientReflectance(FaceViewer(sr));
 
     private static ShadingRecord FaceViewer(ShadingRecord sr)
     {

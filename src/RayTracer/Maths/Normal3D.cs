@@ -6,7 +6,7 @@ namespace RayTracer.Maths;
 /// A surface normal. Kept distinct from <see cref="Vector3D"/> because affine maps transform
 /// normals with the inverse transpose, not with the matrix itself.
 /// </summary>
-public struct Normal3D : IEquatable<Normal3D>
+public struct Normal3D : ITuple3<Normal3D>
 {
     public double x;
     public double y;
@@ -57,10 +57,14 @@ public struct Normal3D : IEquatable<Normal3D>
 
     public static explicit operator Normal3D(Vector3D v) => new(v.x, v.y, v.z);
 
-    public readonly bool Equals(Normal3D other) => x == other.x && y == other.y && z == other.z;
+    static Normal3D ITuple3<Normal3D>.Create(double first, double second, double third) => new(first, second, third);
+
+    public readonly (double First, double Second, double Third) Components => (x, y, z);
+
+    public readonly bool Equals(Normal3D other) => Tuple3.Equal(this, other);
     public override readonly bool Equals(object? obj) => obj is Normal3D n && Equals(n);
-    public override readonly int GetHashCode() => HashCode.Combine(x, y, z);
+    public override readonly int GetHashCode() => Tuple3.Hash(this);
     public static bool operator ==(Normal3D a, Normal3D b) => a.Equals(b);
     public static bool operator !=(Normal3D a, Normal3D b) => !a.Equals(b);
-    public override readonly string ToString() => FormattableString.Invariant($"<{x}, {y}, {z}>");
+    public override readonly string ToString() => Tuple3.Format(this, "<", ">");
 }

@@ -3,7 +3,7 @@ using System.Runtime.CompilerServices;
 namespace RayTracer.Maths;
 
 /// <summary>A position in 3D space. Fields are lower-case x, y, z because generated bindings read them.</summary>
-public struct Point3D : IEquatable<Point3D>
+public struct Point3D : ITuple3<Point3D>
 {
     public double x;
     public double y;
@@ -53,10 +53,14 @@ public struct Point3D : IEquatable<Point3D>
 
     public readonly Vector3D ToVector() => new(x, y, z);
 
-    public readonly bool Equals(Point3D other) => x == other.x && y == other.y && z == other.z;
+    static Point3D ITuple3<Point3D>.Create(double first, double second, double third) => new(first, second, third);
+
+    public readonly (double First, double Second, double Third) Components => (x, y, z);
+
+    public readonly bool Equals(Point3D other) => Tuple3.Equal(this, other);
     public override readonly bool Equals(object? obj) => obj is Point3D p && Equals(p);
-    public override readonly int GetHashCode() => HashCode.Combine(x, y, z);
+    public override readonly int GetHashCode() => Tuple3.Hash(this);
     public static bool operator ==(Point3D a, Point3D b) => a.Equals(b);
     public static bool operator !=(Point3D a, Point3D b) => !a.Equals(b);
-    public override readonly string ToString() => FormattableString.Invariant($"({x}, {y}, {z})");
+    public override readonly string ToString() => Tuple3.Format(this, "(", ")");
 }

@@ -3,7 +3,7 @@ using System.Runtime.CompilerServices;
 namespace RayTracer.Maths;
 
 /// <summary>A direction or displacement in 3D space.</summary>
-public struct Vector3D : IEquatable<Vector3D>
+public struct Vector3D : ITuple3<Vector3D>
 {
     public double x;
     public double y;
@@ -80,10 +80,14 @@ public struct Vector3D : IEquatable<Vector3D>
     public static explicit operator Vector3D(Normal3D n) => new(n.x, n.y, n.z);
     public static explicit operator Vector3D(Point3D p) => new(p.x, p.y, p.z);
 
-    public readonly bool Equals(Vector3D other) => x == other.x && y == other.y && z == other.z;
+    static Vector3D ITuple3<Vector3D>.Create(double first, double second, double third) => new(first, second, third);
+
+    public readonly (double First, double Second, double Third) Components => (x, y, z);
+
+    public readonly bool Equals(Vector3D other) => Tuple3.Equal(this, other);
     public override readonly bool Equals(object? obj) => obj is Vector3D v && Equals(v);
-    public override readonly int GetHashCode() => HashCode.Combine(x, y, z);
+    public override readonly int GetHashCode() => Tuple3.Hash(this);
     public static bool operator ==(Vector3D a, Vector3D b) => a.Equals(b);
     public static bool operator !=(Vector3D a, Vector3D b) => !a.Equals(b);
-    public override readonly string ToString() => FormattableString.Invariant($"[{x}, {y}, {z}]");
+    public override readonly string ToString() => Tuple3.Format(this, "[", "]");
 }

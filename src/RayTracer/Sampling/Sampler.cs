@@ -151,6 +151,4 @@ public abstract class Sampler
     public Point2D SampleUnitDisk() => (_diskSamples ?? throw new InvalidOperationException("Sampler was not mapped to the unit disk."))[NextIndex()];
 
     public Vector3D SampleHemisphere() => (_hemisphereSamples ?? throw new InvalidOperationException("Sampler was not mapped to the hemisphere."))[NextIndex()];
-
-    public Vector3D SampleSphere() => (_sphereSamples ?? throw new InvalidOperationException("Sampler was not mapped to the sphere."))[NextIndex()];
 }

@@ -1,6 +1,7 @@
 using RayTracer.Bounds;
 using RayTracer.Colors;
 using RayTracer.Geometry;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Maths;
 using RayTracer.Textures;
@@ -29,7 +30,8 @@ public class World
 
     public Camera? Camera { get; set; }
 
-    public Tracer? Tracer { get; set; }
+    /// <summary>The light transport algorithm: it traces the rays and samples the lights.</summary>
+    public Integrator? Integrator { get; set; }
 
     /// <summary>
     /// Hits nearer than this along a ray from a surface (or the eye) are ignored, against rounding
@@ -57,8 +59,8 @@ public class World
             return;
         var size = Math.Max(box.Diagonal.x, Math.Max(box.Diagonal.y, box.Diagonal.z));
         var reach = Math.Max(MaxAbs(box.Min), MaxAbs(box.Max));
-        // Doubles carry 16 digits: 1e-12 of the coordinates leaves a wide margin over their rounding.
-        var epsilon = Math.Max(MathConstants.Epsilon * size, 1e-12 * reach);
+        // Doubles carry 16 digits: a relative 1e-12 of the coordinates leaves a wide margin over their rounding.
+        var epsilon = Math.Max(MathConstants.Epsilon * size, Tolerances.RelativeRounding * reach);
         if (epsilon > 0 && double.IsFinite(epsilon))
             RayEpsilon = epsilon;
     }
@@ -80,7 +82,7 @@ public class World
     {
         RayStatistics.CountRay();
         sr.Reset();
-        sr.World = this;
+        sr.RayEpsilon = RayEpsilon;
         var tmin = MathConstants.HugeValue;
         Normal3D normal = default;
         Point3D local = default;

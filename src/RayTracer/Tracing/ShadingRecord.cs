@@ -1,6 +1,5 @@
 using RayTracer.Materials;
 using RayTracer.Maths;
-using RayTracer.Scenes;
 using RayTracer.Textures;
 
 namespace RayTracer.Tracing;
@@ -8,14 +7,10 @@ namespace RayTracer.Tracing;
 /// <summary>
 /// Everything shading needs to know about the nearest hit along a ray. A class (not a struct)
 /// because it is filled in by objects, passed through materials and lights, and mutated along the way.
+/// It knows nothing of the world: integrators trace the rays it spawns.
 /// </summary>
 public sealed class ShadingRecord
 {
-    public ShadingRecord(World? world)
-    {
-        World = world;
-    }
-
     public bool HitAnObject { get; set; }
 
     public Material? Material { get; set; }
@@ -48,13 +43,17 @@ public sealed class ShadingRecord
 
     public TextureCoordinates TextureCoordinates { get; set; }
 
-    public World? World { get; set; }
+    /// <summary>
+    /// Hits nearer than this along rays spawned here are ignored: the scene's <see cref="Scenes.World.RayEpsilon"/>,
+    /// copied in when the world fills the record.
+    /// </summary>
+    public double RayEpsilon { get; set; } = MathConstants.Epsilon;
 
     /// <summary>
     /// A ray leaving the hit point along <paramref name="direction"/> (a unit vector), which ignores hits
-    /// nearer than the world's <see cref="Scenes.World.RayEpsilon"/> so that it does not find its own surface again.
+    /// nearer than <see cref="RayEpsilon"/> so that it does not find its own surface again.
     /// </summary>
-    public Ray SpawnRay(Vector3D direction) => new(HitPoint, direction, World?.RayEpsilon ?? MathConstants.Epsilon);
+    public Ray SpawnRay(Vector3D direction) => new(HitPoint, direction, RayEpsilon);
 
     /// <summary>Clears the per-hit state so a record can be reused for another ray.</summary>
     public void Reset()

@@ -19,7 +19,7 @@ internal static class ShadingRecordPool
         var records = _records ??= new ShadingRecord[8];
         if (_inUse == records.Length)
             _records = records = GrowTo(records, 2 * records.Length);
-        return records[_inUse++] ??= new ShadingRecord(null);
+        return records[_inUse++] ??= new ShadingRecord();
     }
 
     /// <summary>Gives back the record most recently rented on this thread.</summary>

@@ -27,9 +27,6 @@ public sealed class AffineTransform
     /// <summary>Forward matrix element (row, column).</summary>
     public double this[int row, int column] => _m[row * 4 + column];
 
-    /// <summary>Inverse matrix element (row, column).</summary>
-    public double InverseElement(int row, int column) => _inv[row * 4 + column];
-
     public AffineTransform Inverse => new(_inv, _m);
 
     public static AffineTransform Translation(double dx, double dy, double dz)
@@ -169,12 +166,8 @@ public sealed class AffineTransform
 
     public Point3D InverseTransformPoint(Point3D p) => Apply(_inv, p);
 
-    public Vector3D InverseTransformVector(Vector3D v) => ApplyLinear(_inv, v);
-
     /// <summary>The ray mapped into the untransformed object's frame (same parameter t on both rays).</summary>
     public Ray InverseTransformRay(in Ray ray) => new(Apply(_inv, ray.o), ApplyLinear(_inv, ray.d), ray.tMin);
-
-    public Ray TransformRay(in Ray ray) => new(Apply(_m, ray.o), ApplyLinear(_m, ray.d), ray.tMin);
 
     /// <summary>Axis-aligned box enclosing the image of <paramref name="box"/>.</summary>
     public BoundingBox TransformBox(in BoundingBox box) => box.Map(TransformPoint);

@@ -1,6 +1,4 @@
-using RayTracer.Colors;
 using RayTracer.Maths;
-using RayTracer.Scenes;
 using RayTracer.Tracing;
 
 namespace RayTracer.Viewing;
@@ -63,31 +61,13 @@ public abstract class Camera
     /// </summary>
     public abstract bool GetRay(Point2D pp, ViewPlane vp, out Ray ray);
 
-    /// <summary>Average radiance over the pixel at (<paramref name="column"/>, <paramref name="row"/>), row 0 at the top.</summary>
-    public virtual RGBColor RenderPixel(World world, int column, int row)
+    /// <summary>
+    /// The camera whose rays fill image column <paramref name="column"/>, and that column in its own image:
+    /// this camera itself, except for cameras made of several eyes. Null where no camera sees (a gap).
+    /// </summary>
+    public virtual Camera? EyeFor(ViewPlane vp, int column, out int eyeColumn)
     {
-        var vp = world.ViewPlane;
-        var tracer = world.Tracer ?? throw new InvalidOperationException("The world has no tracer.");
-        var r = vp.VerticalResolution - 1 - row;
-        var s = vp.PixelSize;
-        var sum = RGBColor.Black;
-        var n = vp.NumSamples;
-        for (var j = 0; j < n; j++)
-        {
-            var sp = vp.Sampler.SampleUnitSquare();
-            var pp = new Point2D(
-                s * (column - 0.5 * vp.HorizontalResolution + sp.x),
-                s * (r - 0.5 * vp.VerticalResolution + sp.y));
-            if (GetRay(pp, vp, out var ray))
-            {
-                ray.tMin = world.RayEpsilon;
-                RayStatistics.CountPrimary();
-                sum += tracer.TraceRay(ray, 0);
-            }
-        }
-        return sum * (Exposure / n);
+        eyeColumn = column;
+        return this;
     }
-
-    /// <summary>Renders the whole image on all cores with seed 0.</summary>
-    public FrameBuffer RenderScene(World world) => new Renderer().Render(world);
 }

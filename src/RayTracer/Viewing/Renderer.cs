@@ -23,8 +23,7 @@ public sealed class Renderer
     public RenderResult RenderWithStatistics(World world)
     {
         var camera = world.Camera ?? throw new InvalidOperationException("The world has no camera.");
-        if (world.Tracer is null)
-            throw new InvalidOperationException("The world has no tracer.");
+        var integrator = world.Integrator ?? throw new InvalidOperationException("The world has no integrator.");
         var vp = world.ViewPlane;
         var width = camera.ImageWidth(vp);
         var height = camera.ImageHeight(vp);
@@ -53,7 +52,7 @@ public sealed class Renderer
             for (var column = x0; column < x1; column++)
             {
                 SamplingContext.BeginPixel(Options.Seed, (ulong)row * (ulong)width + (ulong)column);
-                image[column, row] = camera.RenderPixel(world, column, row);
+                image[column, row] = integrator.RenderPixel(camera, column, row);
             }
             var (p1, r1) = RayStatistics.Snapshot();
             Interlocked.Add(ref primary, p1 - p0);

@@ -1,6 +1,4 @@
-using RayTracer.Colors;
 using RayTracer.Maths;
-using RayTracer.Scenes;
 using RayTracer.Tracing;
 
 namespace RayTracer.Viewing;
@@ -44,15 +42,15 @@ public sealed class StereoCamera : Camera
 
     public override bool GetRay(Point2D pp, ViewPlane vp, out Ray ray) => Left.GetRay(pp, vp, out ray);
 
-    public override RGBColor RenderPixel(World world, int column, int row)
+    /// <summary>The first eye fills the left half, the second the right, with a black gap between.</summary>
+    public override Camera? EyeFor(ViewPlane vp, int column, out int eyeColumn)
     {
-        var hres = world.ViewPlane.HorizontalResolution;
+        var hres = vp.HorizontalResolution;
         var first = Viewing == StereoViewing.Parallel ? Left : Right;
         var second = Viewing == StereoViewing.Parallel ? Right : Left;
+        eyeColumn = column < hres ? column : column - hres - PixelGap;
         if (column < hres)
-            return first.RenderPixel(world, column, row) * Exposure;
-        if (column >= hres + PixelGap)
-            return second.RenderPixel(world, column - hres - PixelGap, row) * Exposure;
-        return RGBColor.Black;
+            return first;
+        return column >= hres + PixelGap ? second : null;
     }
 }

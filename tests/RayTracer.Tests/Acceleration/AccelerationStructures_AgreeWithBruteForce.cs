@@ -160,8 +160,8 @@ public class AccelerationStructures_AgreeWithBruteForce
         var objects = RandomScene(103, 300, 30);
         var structure = Build(kind, objects);
         var random = new SeededRandom(203);
-        var viaStructure = new ShadingRecord(null);
-        var direct = new ShadingRecord(null);
+        var viaStructure = new ShadingRecord();
+        var direct = new ShadingRecord();
         for (int n = 0; n < 1000; n++)
         {
             var ray = RandomRay(random, fromInside: false);

@@ -12,7 +12,7 @@ public class BinaryObject_Mask
     {
         // Keep the half of the sphere with u < 0.5 (azimuth from +z towards +x below π, i.e. x > 0).
         var masked = new BinaryObject(new Sphere(Point3D.Origin, 1), sr => sr.TextureCoordinates.u < 0.5);
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         // Coming from +x the front (x > 0) is kept.
         Assert.True(masked.Hit(new Ray(new Point3D(5, 0.1, 0.2), new Vector3D(-1, 0, 0)), out double t, sr));
         Assert.True(Math.Abs(t - (5 - Math.Sqrt(1 - 0.05))) < 1e-9);
@@ -27,7 +27,7 @@ public class BinaryObject_Mask
     {
         // Keep only the cap y > 0.9: a ray along the x axis crosses the sphere twice, both masked out.
         var masked = new BinaryObject(new Sphere(Point3D.Origin, 1), sr => sr.LocalHitPoint.y > 0.9);
-        var sr = new ShadingRecord(null) { Normal = new Normal3D(7, 7, 7) };
+        var sr = new ShadingRecord() { Normal = new Normal3D(7, 7, 7) };
         Assert.False(masked.Hit(new Ray(new Point3D(-5, 0, 0), new Vector3D(1, 0, 0)), out _, sr));
         Assert.Equal(new Normal3D(7, 7, 7), sr.Normal);
         Assert.False(masked.Intersect(new Ray(new Point3D(-5, 0, 0), new Vector3D(1, 0, 0)), out _));

@@ -17,8 +17,8 @@ public class Instance_Hits
             .Scale(2).RotateY(0.7).RotateX(-0.3).Translate(3, -1, 2);
         var reference = new Sphere(new Point3D(3, -1, 2), 2);
         var random = new SeededRandom(81);
-        var a = new ShadingRecord(null);
-        var b = new ShadingRecord(null);
+        var a = new ShadingRecord();
+        var b = new ShadingRecord();
         int hits = 0;
         for (int n = 0; n < 2000; n++)
         {
@@ -43,7 +43,7 @@ public class Instance_Hits
     {
         // x²/4 + y² + z² = 1; normal ∝ (x/4, y, z).
         var ellipsoid = new Instance(new Sphere(Point3D.Origin, 1)).Scale(2, 1, 1);
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         var origin = new Point3D(5, 5, 0);
         var target = new Point3D(2 * Math.Cos(0.6), Math.Sin(0.6), 0);
         Assert.True(ellipsoid.Hit(new Ray(origin, target - origin), out double t, sr));

@@ -74,7 +74,7 @@ public class TriangleNormal_CrossProduct
             var mesh = new Mesh([v0, v1, v2], [0, 1, 2]);
             var centroid = new Point3D((v0.x + v1.x + v2.x) / 3, (v0.y + v1.y + v2.y) / 3, (v0.z + v1.z + v2.z) / 3);
             var towards = new Vector3D(-unit.Item1, -unit.Item2, -unit.Item3);
-            var sr = new ShadingRecord(null);
+            var sr = new ShadingRecord();
             Assert.True(new MeshTriangle(mesh, 0, smooth: false).Hit(new Ray(centroid - towards, towards), out _, sr));
             AssertClose(unit, sr.Normal);
 

@@ -1,5 +1,6 @@
 using RayTracer.Colors;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Materials;
 using RayTracer.Maths;
@@ -14,7 +15,7 @@ public class AmbientOccluder_Visibility
 {
     private static double Render(bool withCeiling, int samples)
     {
-        var world = TestScenes.OrthographicWorld(1, 0.01, w => new RayCastTracer(w), samples);
+        var world = TestScenes.OrthographicWorld(1, 0.01, w => new RayCastIntegrator(w), samples);
         var camera = new OrthographicCamera { Eye = new Point3D(0, 0, 0.5), LookAt = Point3D.Origin };
         camera.ComputeUVW();
         world.Camera = camera;
@@ -37,7 +38,7 @@ public class AmbientOccluder_Visibility
     {
         // A wall plane through the shading point's neighbourhood blocking x > 0 removes half of the
         // cosine-distributed directions, so the expected light is the mean of the two levels.
-        var world = TestScenes.OrthographicWorld(1, 0.001, w => new RayCastTracer(w), 256);
+        var world = TestScenes.OrthographicWorld(1, 0.001, w => new RayCastIntegrator(w), 256);
         var camera = new OrthographicCamera { Eye = new Point3D(0, 0, 0.5), LookAt = Point3D.Origin };
         camera.ComputeUVW();
         world.Camera = camera;

@@ -1,5 +1,6 @@
 using RayTracer.Colors;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Materials;
 using RayTracer.Maths;
@@ -17,7 +18,7 @@ public class AreaLight_Disk
         // A Lambertian disk of radiance Le and radius R at height h gives, on its axis, E = π Le R² / (h² + R²);
         // a Lambertian receiver then reflects L = kd/π · E.
         const double le = 3.0, radius = 1.0, height = 2.0, kd = 0.9;
-        var world = TestScenes.OrthographicWorld(1, 0.001, w => new AreaLightingTracer(w), samples: 1024);
+        var world = TestScenes.OrthographicWorld(1, 0.001, w => new AreaLightingIntegrator(w), samples: 1024);
         var camera = new OrthographicCamera { Eye = new Point3D(0, 0, 1), LookAt = Point3D.Origin };
         camera.ComputeUVW();
         world.Camera = camera;
@@ -40,7 +41,7 @@ public class AreaLight_Disk
         // Same disk light found by cosine-sampled bounces (path) or by explicit light sampling at the first
         // hit with emitter hits after one bounce discarded (global): both must give kd · Le · R² / (h² + R²).
         const double le = 3.0, radius = 1.0, height = 2.0, kd = 0.9;
-        var world = TestScenes.OrthographicWorld(1, 0.001, w => kind == "path" ? new PathTracer(w) : new GlobalTracer(w), samples: 16384);
+        var world = TestScenes.OrthographicWorld(1, 0.001, w => kind == "path" ? new PathIntegrator(w) : new GlobalIntegrator(w), samples: 16384);
         var camera = new OrthographicCamera { Eye = new Point3D(0, 0, 1), LookAt = Point3D.Origin };
         camera.ComputeUVW();
         world.Camera = camera;
@@ -58,7 +59,7 @@ public class AreaLight_Disk
     [Fact]
     public void The_back_of_an_emitter_is_dark()
     {
-        var world = TestScenes.OrthographicWorld(1, 0.001, w => new AreaLightingTracer(w), samples: 16);
+        var world = TestScenes.OrthographicWorld(1, 0.001, w => new AreaLightingIntegrator(w), samples: 16);
         world.Add(new Plane(Point3D.Origin, new Normal3D(0, 0, 1)) { Material = new Matte(0, 1, RGBColor.White) });
         var emitter = new Emissive(3.0);
         var disk = new Disk(new Point3D(0, 0, 2), new Normal3D(0, 0, 1), 1) { Material = emitter, CastsShadows = false };

@@ -1,6 +1,7 @@
 using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Materials;
 using RayTracer.Maths;
 using RayTracer.Tests.Tracing;
@@ -15,7 +16,7 @@ public class AreaLight_Shapes
 
     private static double RenderFloorUnder(Action<RayTracer.Scenes.World> addLight)
     {
-        var world = TestScenes.OrthographicWorld(1, 0.0001, w => new AreaLightingTracer(w), samples: 4096);
+        var world = TestScenes.OrthographicWorld(1, 0.0001, w => new AreaLightingIntegrator(w), samples: 4096);
         var camera = new OrthographicCamera { Eye = new Point3D(0, 0, 0.1), LookAt = Point3D.Origin };
         camera.ComputeUVW();
         world.Camera = camera;

@@ -1,5 +1,6 @@
 using RayTracer.Colors;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Materials;
 using RayTracer.Maths;
 using RayTracer.Tests.Tracing;
@@ -22,7 +23,7 @@ public class Dielectric_Slab
         // Summed: R + (1 - R)² a / (1 - R a), which is 1 for a clear slab (energy is conserved).
         const double ior = 1.5;
         var r = Math.Pow((ior - 1) / (ior + 1), 2);
-        var world = TestScenes.OrthographicWorld(1, 0.01, w => new WhittedTracer(w));
+        var world = TestScenes.OrthographicWorld(1, 0.01, w => new WhittedIntegrator(w));
         world.ViewPlane.MaxDepth = 60;
         world.ViewPlane.MinimumThroughput = 0; // the series is checked to 9 places, so trace every ray
         world.BackgroundColor = RGBColor.White;

@@ -63,7 +63,7 @@ public class Fresnel_Optics
     [Fact]
     public void Brdfs_have_their_defining_values()
     {
-        var sr = new ShadingRecord(null) { Normal = Up };
+        var sr = new ShadingRecord() { Normal = Up };
         var lambertian = new Lambertian(0.6, new RGBColor(1, 0.5, 0));
         Assert.Equal(0.6 / Math.PI, lambertian.F(sr, FromAngle(10), FromAngle(50)).r, 12);
         Assert.Equal(0.3, lambertian.Rho(sr, FromAngle(0)).g, 12);

@@ -1,9 +1,7 @@
 using RayTracer.Colors;
 using RayTracer.Factories;
-using RayTracer.Lights;
 using RayTracer.Materials;
 using RayTracer.Maths;
-using RayTracer.Scenes;
 using RayTracer.Tracing;
 
 namespace RayTracer.Tests.Materials;
@@ -13,12 +11,13 @@ public class TexturedMaterials_Colour
     private static readonly RGBColor Light = new(0.9, 0.2, 0.1), Dark = new(0.1, 0.3, 0.7);
 
     // Unit checker cells: (0.5, 0.5, 0.5) and (1.5, 0.5, 0.5) lie in cells of opposite colour.
+    private static readonly Vector3D Up = new(0, 0, 1);
+
     private static readonly Point3D[] Points = [new(0.5, 0.5, 0.5), new(1.5, 0.5, 0.5)];
 
     private static ShadingRecord AmbientOnlyHit(Point3D local)
     {
-        var world = new World { AmbientLight = new AmbientLight(2.0) };
-        return new ShadingRecord(world)
+        return new ShadingRecord
         {
             HitPoint = local,
             LocalHitPoint = local,
@@ -35,7 +34,8 @@ public class TexturedMaterials_Colour
         foreach (var p in Points)
         {
             var sr = AmbientOnlyHit(p);
-            Assert.Equal(0.4 * 2.0 * checker.GetValue(sr), matte.Shade(sr));
+            Assert.Equal(0.4 * checker.GetValue(sr), matte.AmbientReflectance(sr));
+            Assert.Equal(0.6 * MathConstants.InvPi * checker.GetValue(sr), matte.GetBsdf(sr).F(Up, Up));
         }
         Assert.NotEqual(checker.GetValue(AmbientOnlyHit(Points[0])), checker.GetValue(AmbientOnlyHit(Points[1])));
     }
@@ -48,7 +48,7 @@ public class TexturedMaterials_Colour
         foreach (var p in Points)
         {
             var sr = AmbientOnlyHit(p);
-            Assert.Equal(0.3 * 2.0 * checker.GetValue(sr), phong.Shade(sr));
+            Assert.Equal(0.3 * checker.GetValue(sr), phong.AmbientReflectance(sr));
             Assert.Equal(0.6 * checker.GetValue(sr), phong.DiffuseBrdf.Rho(sr, default));
         }
     }
@@ -57,7 +57,8 @@ public class TexturedMaterials_Colour
     public void Plain_colour_materials_equal_the_same_colour_as_a_constant_texture()
     {
         var sr = AmbientOnlyHit(Points[0]);
-        Assert.Equal(new Matte(0.4, 0.6, TextureFactory.Constant(Light)).Shade(sr), new Matte(0.4, 0.6, Light).Shade(sr));
+        Assert.Equal(new Matte(0.4, 0.6, TextureFactory.Constant(Light)).AmbientReflectance(sr), new Matte(0.4, 0.6, Light).AmbientReflectance(sr));
+        Assert.Equal(new Matte(0.4, 0.6, TextureFactory.Constant(Light)).GetBsdf(sr).F(Up, Up), new Matte(0.4, 0.6, Light).GetBsdf(sr).F(Up, Up));
         Assert.Equal(new Emissive(1.5, TextureFactory.Constant(Light)).GetLe(sr), new Emissive(1.5, Light).GetLe(sr));
     }
 }

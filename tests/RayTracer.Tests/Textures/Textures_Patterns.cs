@@ -16,7 +16,7 @@ namespace RayTracer.Tests.Textures;
 public class Textures_Patterns
 {
     private static ShadingRecord At(Point3D local, double u = 0, double v = 0) =>
-        new(null) { LocalHitPoint = local, TextureCoordinates = new TextureCoordinates(u, v) };
+        new() { LocalHitPoint = local, TextureCoordinates = new TextureCoordinates(u, v) };
 
     [Fact]
     public void Checker_2d_alternates_between_neighbouring_checks()

@@ -1,6 +1,7 @@
 using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Materials;
 using RayTracer.Maths;
@@ -43,7 +44,7 @@ internal static class GlassScene
         world.Add(new PointLight(new Point3D(5, 6, 8), 1.2));
         world.Add(new PointLight(new Point3D(-4, 7, 3), 0.8));
         world.Camera = CameraFactory.Pinhole(new Point3D(0, 2.4, 9), new Point3D(0, 0.9, 0), 58, world.ViewPlane);
-        world.Tracer = new WhittedTracer(world);
+        world.Integrator = new WhittedIntegrator(world);
         return world;
     }
 }

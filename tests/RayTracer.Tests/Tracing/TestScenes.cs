@@ -1,3 +1,4 @@
+using RayTracer.Integrators;
 using RayTracer.Maths;
 using RayTracer.Scenes;
 using RayTracer.Tracing;
@@ -8,7 +9,7 @@ namespace RayTracer.Tests.Tracing;
 /// <summary>Small worlds for physics tests: an orthographic camera looking down -z.</summary>
 internal static class TestScenes
 {
-    public static World OrthographicWorld(int size, double pixelSize, Func<World, Tracer> tracer, int samples = 1)
+    public static World OrthographicWorld(int size, double pixelSize, Func<World, Integrator> integrator, int samples = 1)
     {
         var world = new World();
         world.ViewPlane = new ViewPlane { HorizontalResolution = size, VerticalResolution = size, PixelSize = pixelSize, MaxDepth = 20 };
@@ -16,7 +17,7 @@ internal static class TestScenes
         var camera = new OrthographicCamera { Eye = new Point3D(0, 0, 10), LookAt = Point3D.Origin };
         camera.ComputeUVW();
         world.Camera = camera;
-        world.Tracer = tracer(world);
+        world.Integrator = integrator(world);
         return world;
     }
 

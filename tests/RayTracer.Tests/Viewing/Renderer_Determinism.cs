@@ -1,5 +1,6 @@
 using RayTracer.Colors;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Materials;
 using RayTracer.Maths;
@@ -15,7 +16,7 @@ public class Renderer_Determinism
 {
     private static byte[] Render(int threads, ulong seed, int tileSize = 4)
     {
-        var world = TestScenes.OrthographicWorld(24, 0.12, w => new PathTracer(w), samples: 4);
+        var world = TestScenes.OrthographicWorld(24, 0.12, w => new PathIntegrator(w), samples: 4);
         world.ViewPlane.MaxDepth = 4;
         world.Environment = new EnvironmentLight(new MultiJitteredSampler(4), 1.0);
         world.Add(new Sphere(Point3D.Origin, 1) { Material = new Matte(0, 0.7, new RGBColor(0.9, 0.6, 0.3)) });
@@ -36,7 +37,7 @@ public class Renderer_Determinism
     [Fact]
     public void Statistics_count_primary_and_secondary_rays()
     {
-        var world = TestScenes.OrthographicWorld(4, 1, w => new RayCastTracer(w), samples: 4);
+        var world = TestScenes.OrthographicWorld(4, 1, w => new RayCastIntegrator(w), samples: 4);
         world.Add(new Plane(Point3D.Origin, new Normal3D(0, 0, 1)) { Material = new Matte() });
         world.Add(new PointLight(new Point3D(0, 0, 5)));
         var result = new Renderer().RenderWithStatistics(world);

@@ -133,7 +133,7 @@ internal sealed class InstancingExperiment
     /// </summary>
     internal static double Replay(GeometricObject[] tubes, List<InstancingRecordedTest> log)
     {
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         var sink = 0.0;
         var start = ThreadCpuClock.NowMilliseconds();
         foreach (ref readonly var test in CollectionsMarshal.AsSpan(log))

@@ -1,4 +1,5 @@
 using RayTracer.Factories;
+using RayTracer.Integrators;
 using RayTracer.Maths;
 using RayTracer.Scenes.Showcase;
 using RayTracer.Tracing;
@@ -16,6 +17,6 @@ public sealed class FisheyeScene : ShowcaseScene
     {
         AddContent(world);
         world.Camera = CameraFactory.Fisheye(new Point3D(0, 1.5, 4), ViewTarget, 180);
-        world.Tracer = new WhittedTracer(world);
+        world.Integrator = new WhittedIntegrator(world);
     }
 }

@@ -1,4 +1,5 @@
 using RayTracer.Factories;
+using RayTracer.Integrators;
 using RayTracer.Scenes.Showcase;
 using RayTracer.Tracing;
 
@@ -14,6 +15,6 @@ public sealed class OrthographicScene : ShowcaseScene
     {
         AddContent(world);
         world.Camera = CameraFactory.Orthographic(ViewEye, ViewTarget, 8.5, world.ViewPlane);
-        world.Tracer = new WhittedTracer(world);
+        world.Integrator = new WhittedIntegrator(world);
     }
 }

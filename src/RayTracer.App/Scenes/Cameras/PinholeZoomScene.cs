@@ -1,4 +1,5 @@
 using RayTracer.Factories;
+using RayTracer.Integrators;
 using RayTracer.Maths;
 using RayTracer.Scenes.Showcase;
 using RayTracer.Tracing;
@@ -17,6 +18,6 @@ public sealed class PinholeZoomScene : ShowcaseScene
         var camera = CameraFactory.Pinhole(new Point3D(4, 2, 20), ViewTarget, 55, world.ViewPlane);
         camera.Zoom = 2.5;
         world.Camera = camera;
-        world.Tracer = new WhittedTracer(world);
+        world.Integrator = new WhittedIntegrator(world);
     }
 }

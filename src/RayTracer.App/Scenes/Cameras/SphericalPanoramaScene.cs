@@ -1,4 +1,5 @@
 using RayTracer.Factories;
+using RayTracer.Integrators;
 using RayTracer.Maths;
 using RayTracer.Scenes.Showcase;
 using RayTracer.Tracing;
@@ -17,6 +18,6 @@ public sealed class SphericalPanoramaScene : ShowcaseScene
     {
         AddContent(world);
         world.Camera = CameraFactory.Spherical(new Point3D(0, 1.2, 1.8), new Point3D(0, 1.2, -1));
-        world.Tracer = new WhittedTracer(world);
+        world.Integrator = new WhittedIntegrator(world);
     }
 }

@@ -1,4 +1,5 @@
 using RayTracer.Factories;
+using RayTracer.Integrators;
 using RayTracer.Scenes.Showcase;
 using RayTracer.Tracing;
 
@@ -16,6 +17,6 @@ public sealed class StereoScene : ShowcaseScene
     {
         AddContent(world);
         world.Camera = CameraFactory.Stereo(ViewEye, ViewTarget, 55, 4, world.ViewPlane);
-        world.Tracer = new WhittedTracer(world);
+        world.Integrator = new WhittedIntegrator(world);
     }
 }

@@ -1,4 +1,5 @@
 using RayTracer.Factories;
+using RayTracer.Integrators;
 using RayTracer.Maths;
 using RayTracer.Scenes.Showcase;
 using RayTracer.Tracing;
@@ -17,6 +18,6 @@ public sealed class ThinLensScene : ShowcaseScene
         AddContent(world);
         var focus = ViewEye.Distance(new Point3D(0, 1, -0.8));
         world.Camera = CameraFactory.ThinLens(ViewEye, ViewTarget, 55, focus, 0.25, world.ViewPlane);
-        world.Tracer = new WhittedTracer(world);
+        world.Integrator = new WhittedIntegrator(world);
     }
 }

@@ -1,6 +1,7 @@
 using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Maths;
 using RayTracer.Tracing;
@@ -37,7 +38,7 @@ public abstract class GpcmGallery : SceneDescription
         if (!CameraCatalog.TryFind(CameraName, out var choice))
             throw new InvalidOperationException($"No camera '{CameraName}' in the catalogue.");
         world.Camera = choice.Create(Degrees, world.ViewPlane, Eye, Target, UpDirection);
-        world.Tracer = new WhittedTracer(world);
+        world.Integrator = new WhittedIntegrator(world);
     }
 
     /// <summary>

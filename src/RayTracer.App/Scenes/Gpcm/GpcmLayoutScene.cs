@@ -3,8 +3,9 @@ using RayTracer.Factories;
 using RayTracer.Geometry.Compound;
 using RayTracer.Geometry.Parametric;
 using RayTracer.Geometry.Universal;
-using RayTracer.Maths;
+using RayTracer.Integrators;
 using RayTracer.Materials;
+using RayTracer.Maths;
 using RayTracer.Tracing;
 using RayTracer.Viewing;
 
@@ -58,7 +59,7 @@ public sealed class GpcmLayoutScene(string cameraName, double degrees, int figur
         world.Add(new Cylinder(Eye, 1.2 * LensSize * look, 0.025, capped: true) { Material = MaterialFactory.Plastic(new RGBColor(0.8, 0.1, 0.1)) });
 
         world.Camera = Outside(world.ViewPlane);
-        world.Tracer = new WhittedTracer(world);
+        world.Integrator = new WhittedIntegrator(world);
     }
 
     /// <summary>The size of the rest-frame surface: its largest distance from the eye over a grid of (u, v).</summary>

@@ -54,7 +54,7 @@ public sealed record CylinderSpec(Point3D Base, Vector3D Axis, double Radius, Ma
         var unit = Axis.Normalized();
         var cross = Vector3D.Cross(Vector3D.UnitY, unit);
         var sin = cross.Length;
-        if (sin < 1e-12)
+        if (sin < Tolerances.RelativeRounding)
             return unit.y > 0 ? (Vector3D.UnitX, 0) : (Vector3D.UnitX, Math.PI);
         return (cross / sin, Math.Atan2(sin, unit.y));
     }

@@ -3,6 +3,7 @@ using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Materials;
 using RayTracer.Maths;
@@ -74,7 +75,7 @@ public abstract class InstancingScene : SceneDescription
     protected static void SetCamera(World world, Point3D eye, Point3D lookAt, double horizontalFovDegrees, bool reflections)
     {
         world.Camera = CameraFactory.Pinhole(eye, lookAt, horizontalFovDegrees, world.ViewPlane);
-        world.Tracer = reflections ? new WhittedTracer(world) : new RayCastTracer(world);
+        world.Integrator = reflections ? new WhittedIntegrator(world) : new RayCastIntegrator(world);
     }
 
     /// <summary>Plastic; tubes turn their normal towards the ray, so the inner wall shades too.</summary>

@@ -3,6 +3,7 @@ using RayTracer.Factories;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Generic;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Maths;
 using RayTracer.Tracing;
 
@@ -26,7 +27,7 @@ public abstract class RoomScene : SceneDescription
         world.Add(WithMaterial(new Instance(new Torus(0.6, 0.22)).RotateX(1.1).Translate(2.4, 0.75, 0.8), MaterialFactory.Plastic(new RGBColor(0.25, 0.4, 0.9))));
         AddLights(world);
         world.Camera = CameraFactory.Pinhole(new Point3D(0, 2.6, 8), new Point3D(0, 1, 0), 55, world.ViewPlane);
-        world.Tracer ??= new AreaLightingTracer(world);
+        world.Integrator ??= new AreaLightingIntegrator(world);
     }
 
     protected abstract void AddLights(World world);

@@ -3,6 +3,7 @@ using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry.Meshes;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Materials;
 using RayTracer.Maths;
@@ -94,6 +95,6 @@ public sealed class MeshStudioScene : SceneDescription
 
         var eye = centre + FittedDistance(radius, vp.HorizontalResolution, vp.VerticalResolution) * Direction(AzimuthDegrees, ElevationDegrees);
         world.Camera = CameraFactory.Pinhole(eye, centre, HorizontalFieldOfViewDegrees, vp);
-        world.Tracer = new RayCastTracer(world);
+        world.Integrator = new RayCastIntegrator(world);
     }
 }

@@ -6,6 +6,7 @@ using RayTracer.Factories;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Meshes;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Kernels;
 using RayTracer.Lights;
 using RayTracer.Maths;
@@ -93,6 +94,6 @@ public sealed class MeshesScene : SceneDescription
         world.Add(LightFactory.Point(new Point3D(-3, 6, 7), 1.2));
         world.Add(LightFactory.Directional(new Vector3D(4, 3, 2), 0.5));
         world.Camera = CameraFactory.Pinhole(new Point3D(0, 1.8, 7), new Point3D(0, -0.1, 0), 55, world.ViewPlane);
-        world.Tracer = new WhittedTracer(world);
+        world.Integrator = new WhittedIntegrator(world);
     }
 }

@@ -2,6 +2,7 @@ using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Maths;
 using RayTracer.Textures.Patterns;
@@ -29,6 +30,6 @@ public sealed class BinaryObjectScene : SceneDescription
         });
         world.Add(LightFactory.Point(new Point3D(2, 7, 6), 1.3));
         world.Camera = CameraFactory.Pinhole(new Point3D(0, 2.5, 7), new Point3D(0, 1.1, 0), 55, world.ViewPlane);
-        world.Tracer = new RayCastTracer(world);
+        world.Integrator = new RayCastIntegrator(world);
     }
 }

@@ -3,6 +3,7 @@ using RayTracer.Factories;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Compound;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Maths;
 using RayTracer.Tracing;
@@ -29,6 +30,6 @@ public sealed class CompoundObjectsScene : SceneDescription
         world.Add(LightFactory.Point(new Point3D(-3, 8, 7), 1.4));
         world.Add(LightFactory.Directional(new Vector3D(3, 4, 2), 0.5));
         world.Camera = CameraFactory.Pinhole(new Point3D(0, 3.5, 8.5), new Point3D(0, 0.7, 0), 55, world.ViewPlane);
-        world.Tracer = new WhittedTracer(world);
+        world.Integrator = new WhittedIntegrator(world);
     }
 }

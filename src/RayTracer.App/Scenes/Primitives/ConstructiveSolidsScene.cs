@@ -4,6 +4,7 @@ using RayTracer.Geometry;
 using RayTracer.Geometry.Compound;
 using RayTracer.Geometry.Csg;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Maths;
 using RayTracer.Tracing;
@@ -51,7 +52,7 @@ public sealed class ConstructiveSolidsScene : SceneDescription
         world.Add(LightFactory.Point(new Point3D(-3, 7, 7), 1.3));
         world.Add(LightFactory.Directional(new Vector3D(3, 4, 2), 0.45));
         world.Camera = CameraFactory.Pinhole(new Point3D(0, 3.2, 8), new Point3D(0, 0.7, 0), 55, world.ViewPlane);
-        world.Tracer = new RayCastTracer(world);
+        world.Integrator = new RayCastIntegrator(world);
     }
 
     private static Instance WithInstance(GeometricObject solid, double turn) => new Instance(solid).RotateY(turn);

@@ -3,6 +3,7 @@ using RayTracer.Factories;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Generic;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Maths;
 using RayTracer.Tracing;
@@ -41,6 +42,6 @@ public sealed class GenericPrimitivesScene : SceneDescription
         world.Add(LightFactory.Point(new Point3D(3, 7, 8), 1.5));
         world.Add(LightFactory.Directional(new Vector3D(-3, 5, 2), 0.4));
         world.Camera = CameraFactory.Pinhole(new Point3D(0, 2.8, 8), new Point3D(0, -0.2, -1), 60, world.ViewPlane);
-        world.Tracer = new RayCastTracer(world);
+        world.Integrator = new RayCastIntegrator(world);
     }
 }

@@ -1,6 +1,7 @@
 using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Maths;
 using RayTracer.Tracing;
@@ -31,6 +32,6 @@ public sealed class UniversalPrimitivesScene : SceneDescription
         world.Add(LightFactory.Point(new Point3D(4, 8, 7), 1.4));
         world.Add(LightFactory.Directional(new Vector3D(-2, 4, 3), 0.5));
         world.Camera = CameraFactory.Pinhole(new Point3D(0, 3, 9), new Point3D(0, 1.3, 0), 60, world.ViewPlane);
-        world.Tracer = new RayCastTracer(world);
+        world.Integrator = new RayCastIntegrator(world);
     }
 }

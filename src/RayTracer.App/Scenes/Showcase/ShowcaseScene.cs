@@ -1,6 +1,7 @@
 using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Maths;
 using RayTracer.Tracing;
@@ -37,6 +38,6 @@ public class ShowcaseScene : SceneDescription
     {
         AddContent(world);
         world.Camera = CameraFactory.Pinhole(ViewEye, ViewTarget, 55, world.ViewPlane);
-        world.Tracer = new WhittedTracer(world);
+        world.Integrator = new WhittedIntegrator(world);
     }
 }

@@ -2,6 +2,7 @@ using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Materials;
 using RayTracer.Maths;
 using RayTracer.Tracing;
@@ -21,7 +22,7 @@ public class CornellBoxScene : SceneDescription
     public override int DefaultSamples => 100;
     public override int DefaultMaxDepth => 6;
 
-    protected virtual Tracer CreateTracer(World world) => new PathTracer(world);
+    protected virtual Integrator CreateIntegrator(World world) => new PathIntegrator(world);
 
     protected override void Populate(World world)
     {
@@ -42,6 +43,6 @@ public class CornellBoxScene : SceneDescription
         LightFactory.AddAreaLight(world, panel, 4.5, new RGBColor(1, 0.9, 0.75));
         // From 10 units in front of the opening a 28° view just fits the box's front edges.
         world.Camera = CameraFactory.Pinhole(new Point3D(s / 2, s / 2, s + 10), new Point3D(s / 2, s / 2, 0), 28, world.ViewPlane);
-        world.Tracer = CreateTracer(world);
+        world.Integrator = CreateIntegrator(world);
     }
 }

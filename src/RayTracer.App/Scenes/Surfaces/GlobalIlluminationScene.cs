@@ -1,3 +1,4 @@
+using RayTracer.Integrators;
 using RayTracer.Tracing;
 
 namespace RayTracer.Scenes.Surfaces;
@@ -9,5 +10,5 @@ public sealed class GlobalIlluminationScene : CornellBoxScene
     public override string Description => "Cornell box with the global tracer (sampled direct light + path-traced indirect).";
     public override int DefaultSamples => 36;
 
-    protected override Tracer CreateTracer(World world) => new GlobalTracer(world);
+    protected override Integrator CreateIntegrator(World world) => new GlobalIntegrator(world);
 }

@@ -1,6 +1,7 @@
 using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Materials;
 using RayTracer.Maths;
@@ -36,6 +37,6 @@ public abstract class MaterialsScene : SceneDescription
         LightFactory.AddRectangleLight(world, new Point3D(-3, 5, -0.5), new Vector3D(6, 0, 0), new Vector3D(0, 0, 2.5), 3.0);
         world.Add(LightFactory.Point(new Point3D(5, 6, 8), 0.6));
         world.Camera = CameraFactory.Pinhole(new Point3D(0, 2.4, 9), new Point3D(0, 0.9, 0), 58, world.ViewPlane);
-        world.Tracer = new AreaLightingTracer(world);
+        world.Integrator = new AreaLightingIntegrator(world);
     }
 }

@@ -2,6 +2,7 @@ using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Maths;
 using RayTracer.Textures.Conversions;
@@ -42,6 +43,6 @@ public sealed class CheckersScene : SceneDescription
         });
         world.Add(LightFactory.Point(new Point3D(3, 8, 8), 1.2));
         world.Camera = CameraFactory.Pinhole(new Point3D(0, 2.5, 8), new Point3D(0, 1, 0), 62, world.ViewPlane);
-        world.Tracer = new RayCastTracer(world);
+        world.Integrator = new RayCastIntegrator(world);
     }
 }

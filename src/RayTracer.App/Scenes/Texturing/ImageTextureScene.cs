@@ -3,6 +3,7 @@ using RayTracer.Factories;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Generic;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Maths;
 using RayTracer.Textures.Images;
@@ -67,6 +68,6 @@ public sealed class ImageTextureScene : SceneDescription
 
         world.Add(LightFactory.Point(new Point3D(0, 6, 9), 1.2));
         world.Camera = CameraFactory.Pinhole(new Point3D(0, 2, 8), new Point3D(0, 1, 0), 60, world.ViewPlane);
-        world.Tracer = new RayCastTracer(world);
+        world.Integrator = new RayCastIntegrator(world);
     }
 }

@@ -3,6 +3,7 @@ using RayTracer.Factories;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Compound;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Maths;
 using RayTracer.Tracing;
@@ -26,6 +27,6 @@ public sealed class MarbleWoodScene : SceneDescription
         world.Add(LightFactory.Point(new Point3D(-3, 7, 7), 1.2));
         world.Add(LightFactory.Directional(new Vector3D(3, 4, 3), 0.4));
         world.Camera = CameraFactory.Pinhole(new Point3D(0, 3, 8), new Point3D(0, 0.9, 0), 55, world.ViewPlane);
-        world.Tracer = new RayCastTracer(world);
+        world.Integrator = new RayCastIntegrator(world);
     }
 }

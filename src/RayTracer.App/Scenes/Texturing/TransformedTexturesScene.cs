@@ -1,6 +1,7 @@
 using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Maths;
 using RayTracer.Textures;
@@ -33,6 +34,6 @@ public sealed class TransformedTexturesScene : SceneDescription
             world.Add(new Sphere(new Point3D(-3.3 + 2.2 * i, 1, 0), 1) { Material = MaterialFactory.Matte(textures[i], 0.35, 0.75) });
         world.Add(LightFactory.Point(new Point3D(2, 8, 8), 1.1));
         world.Camera = CameraFactory.Pinhole(new Point3D(0, 2.2, 8.5), new Point3D(0, 1, 0), 62, world.ViewPlane);
-        world.Tracer = new RayCastTracer(world);
+        world.Integrator = new RayCastIntegrator(world);
     }
 }

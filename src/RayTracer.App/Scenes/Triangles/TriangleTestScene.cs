@@ -3,6 +3,7 @@ using RayTracer.Colors;
 using RayTracer.Factories;
 using RayTracer.Geometry.Meshes;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Materials;
 using RayTracer.Maths;
@@ -70,7 +71,7 @@ public sealed class TriangleTestScene : SceneDescription
         world.Add(new DirectionalLight(MeshStudioScene.Direction(Azimuth + 70, 25), 0.35) { CastsShadows = false });
         var eye = centre + MeshStudioScene.FittedDistance(radius, vp.HorizontalResolution, vp.VerticalResolution) * MeshStudioScene.Direction(Azimuth, Elevation);
         world.Camera = CameraFactory.Pinhole(eye, centre, MeshStudioScene.HorizontalFieldOfViewDegrees, vp);
-        world.Tracer = new WhittedTracer(world);
+        world.Integrator = new WhittedIntegrator(world);
     }
 
     /// <summary>Gives the mesh a material and returns the scene, for building the catalogue in one expression.</summary>

@@ -4,6 +4,7 @@ using RayTracer.Geometry;
 using RayTracer.Geometry.Compound;
 using RayTracer.Geometry.Parametric;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Materials;
 using RayTracer.Maths;
@@ -115,6 +116,6 @@ public abstract class TwisterGallery : SceneDescription
     protected static void SetCamera(World world, Point3D eye, Point3D lookAt, double horizontalFovDegrees)
     {
         world.Camera = CameraFactory.Pinhole(eye, lookAt, horizontalFovDegrees, world.ViewPlane);
-        world.Tracer = new RayCastTracer(world);
+        world.Integrator = new RayCastIntegrator(world);
     }
 }

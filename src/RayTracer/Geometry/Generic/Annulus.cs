@@ -53,5 +53,5 @@ public sealed class Annulus : GeometricObject
         return true;
     }
 
-    public override BoundingBox GetBoundingBox() => new(-Outer, Outer, -1e-9, 1e-9, -Outer, Outer);
+    public override BoundingBox GetBoundingBox() => new(-Outer, Outer, -Tolerances.BoundsPadding, Tolerances.BoundsPadding, -Outer, Outer);
 }

@@ -13,7 +13,7 @@ internal static class Azimuth
 
     public static void CheckRange(double min, double max)
     {
-        if (!(min >= 0 && max <= MathConstants.TwoPi + 1e-12 && min < max))
+        if (!(min >= 0 && max <= MathConstants.TwoPi + Tolerances.RelativeRounding && min < max))
         {
             throw new ArgumentException($"Azimuth range [{min}, {max}] must satisfy 0 ≤ min < max ≤ 2π.");
         }

@@ -19,7 +19,7 @@ public sealed class GenericDisk : GenericPlane
 
     public double Radius { get; }
 
-    public override BoundingBox GetBoundingBox() => new(-Radius, Radius, -1e-9, 1e-9, -Radius, Radius);
+    public override BoundingBox GetBoundingBox() => new(-Radius, Radius, -Tolerances.BoundsPadding, Tolerances.BoundsPadding, -Radius, Radius);
 
     protected override bool Accept(double x, double z) => x * x + z * z < Radius * Radius;
 

@@ -1,3 +1,4 @@
+using RayTracer.Maths;
 using RayTracer.Bounds;
 using RayTracer.Textures;
 
@@ -21,7 +22,7 @@ public sealed class GenericRectangle : GenericPlane
 
     public double HalfDepth { get; }
 
-    public override BoundingBox GetBoundingBox() => new(-HalfWidth, HalfWidth, -1e-9, 1e-9, -HalfDepth, HalfDepth);
+    public override BoundingBox GetBoundingBox() => new(-HalfWidth, HalfWidth, -Tolerances.BoundsPadding, Tolerances.BoundsPadding, -HalfDepth, HalfDepth);
 
     protected override bool Accept(double x, double z) => Math.Abs(x) <= HalfWidth && Math.Abs(z) <= HalfDepth;
 

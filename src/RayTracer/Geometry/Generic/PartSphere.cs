@@ -20,7 +20,7 @@ public sealed class PartSphere : GeometricObject
         }
 
         Azimuth.CheckRange(phiMin, phiMax);
-        if (!(thetaMin >= 0 && thetaMax <= Math.PI + 1e-12 && thetaMin < thetaMax))
+        if (!(thetaMin >= 0 && thetaMax <= Math.PI + Tolerances.RelativeRounding && thetaMin < thetaMax))
         {
             throw new ArgumentException($"Polar range [{thetaMin}, {thetaMax}] must satisfy 0 ≤ min < max ≤ π.");
         }

@@ -69,7 +69,7 @@ public sealed class GaUniversalCylinder : GeometricObject
             _radius * Math.Sqrt(Math.Max(0, 1 - _vz * _vz)));
         var start = BaseCentre;
         var end = start + Axis;
-        return new BoundingBox(Point3D.Min(start, end) - e, Point3D.Max(start, end) + e).Expanded(1e-9);
+        return new BoundingBox(Point3D.Min(start, end) - e, Point3D.Max(start, end) + e).Expanded(Tolerances.BoundsPadding);
     }
 
     // The nearest root past epsilon whose height lies on the tube; `height` is that height.

@@ -1,5 +1,4 @@
 using RayTracer.Bounds;
-using RayTracer.Materials;
 using RayTracer.Maths;
 using RayTracer.Tracing;
 
@@ -14,15 +13,14 @@ namespace RayTracer.Geometry.Instancing;
 /// Texture coordinates that depend on the azimuth come out mirrored; hits and normals do not.
 /// The caller vouches for the symmetry: an object without it would be placed mirrored.
 /// </summary>
-public sealed class RstrInstance : GeometricObject
+public sealed class RstrInstance : TransformedObject
 {
     private readonly double _px, _py, _pz;
     private readonly double _mx, _my, _mz;
-    private Material? _material;
 
     public RstrInstance(GeometricObject target, Point3D position, Vector3D direction)
+        : base(target)
     {
-        Target = target ?? throw new ArgumentNullException(nameof(target));
         if (!double.IsFinite(position.x) || !double.IsFinite(position.y) || !double.IsFinite(position.z))
             throw new ArgumentException($"An RSTR instance needs a finite position, not {position}.", nameof(position));
         if (!double.IsFinite(direction.x) || !double.IsFinite(direction.y) || !double.IsFinite(direction.z))
@@ -35,39 +33,13 @@ public sealed class RstrInstance : GeometricObject
         (_mx, _my, _mz) = (m.x, m.y, m.z);
     }
 
-    public GeometricObject Target { get; }
-
     public Point3D Position => new(_px, _py, _pz);
 
     /// <summary>The unit direction the object's y axis is turned to: the mirror image of e2.</summary>
     public Vector3D Direction => MirrorLocal(Vector3D.UnitY);
 
-    /// <summary>Overrides the target's material when set.</summary>
-    public override Material? Material
+    protected override Normal3D NormalToWorld(Normal3D n)
     {
-        get => _material ?? Target.Material;
-        set => _material = value;
-    }
-
-    public override bool Intersect(in Ray ray, out double t) => Target.Intersect(ToLocal(ray), out t);
-
-    public override bool ShadowHit(in Ray ray, out double tmin)
-    {
-        if (!CastsShadows)
-        {
-            tmin = 0;
-            return false;
-        }
-
-        return Target.ShadowHit(ToLocal(ray), out tmin);
-    }
-
-    public override bool Hit(in Ray ray, out double tmin, ShadingRecord sr)
-    {
-        if (!Target.Hit(ToLocal(ray), out tmin, sr))
-            return false;
-
-        var n = sr.Normal;
         var world = new Normal3D();
 
         #region GMac : RstrNormalToWorld
@@ -82,10 +54,7 @@ public sealed class RstrInstance : GeometricObject
         world.z = n.z - _mz * tmp0;
         #endregion
 
-        sr.Normal = world;
-        if (_material is not null)
-            sr.Material = _material;
-        return true;
+        return world;
     }
 
     public override BoundingBox GetBoundingBox()
@@ -95,7 +64,7 @@ public sealed class RstrInstance : GeometricObject
             var moved = MirrorLocal(new Vector3D(p.x, p.y, p.z));
             return new Point3D(_px + moved.x, _py + moved.y, _pz + moved.z);
         });
-        return box.IsEmpty || !box.IsFinite ? box : box.Expanded(1e-9);
+        return box.IsEmpty || !box.IsFinite ? box : box.Expanded(Tolerances.BoundsPadding);
     }
 
     private Vector3D MirrorLocal(Vector3D x)
@@ -104,7 +73,7 @@ public sealed class RstrInstance : GeometricObject
         return new Vector3D(x.x - twice * _mx, x.y - twice * _my, x.z - twice * _mz);
     }
 
-    private Ray ToLocal(in Ray ray)
+    protected override Ray ToLocal(in Ray ray)
     {
         // The map keeps t (the direction is not renormalised), so the nearest distance accepted carries over.
         var local = new Ray { tMin = ray.tMin };

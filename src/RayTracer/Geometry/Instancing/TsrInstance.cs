@@ -1,5 +1,4 @@
 using RayTracer.Bounds;
-using RayTracer.Materials;
 using RayTracer.Maths;
 using RayTracer.Tracing;
 
@@ -11,10 +10,9 @@ namespace RayTracer.Geometry.Instancing;
 /// ray is taken into the object's frame and the normal back to the world by generated kernels; the
 /// local direction is not renormalized, so t is the same on both rays.
 /// </summary>
-public sealed class TsrInstance : GeometricObject
+public sealed class TsrInstance : TransformedObject
 {
     private readonly TsrTransform _tsr;
-    private Material? _material;
 
     /// <summary>The object moved as the frame of reference was moved from rest (e1, e2, the origin).</summary>
     public TsrInstance(GeometricObject target, FrameOfReference frame)
@@ -23,41 +21,15 @@ public sealed class TsrInstance : GeometricObject
     }
 
     public TsrInstance(GeometricObject target, TsrTransform transform)
+        : base(target)
     {
-        Target = target ?? throw new ArgumentNullException(nameof(target));
         _tsr = transform;
     }
 
-    public GeometricObject Target { get; }
-
     public TsrTransform Transform => _tsr;
 
-    /// <summary>Overrides the target's material when set.</summary>
-    public override Material? Material
+    protected override Normal3D NormalToWorld(Normal3D n)
     {
-        get => _material ?? Target.Material;
-        set => _material = value;
-    }
-
-    public override bool Intersect(in Ray ray, out double t) => Target.Intersect(ToLocal(ray), out t);
-
-    public override bool ShadowHit(in Ray ray, out double tmin)
-    {
-        if (!CastsShadows)
-        {
-            tmin = 0;
-            return false;
-        }
-
-        return Target.ShadowHit(ToLocal(ray), out tmin);
-    }
-
-    public override bool Hit(in Ray ray, out double tmin, ShadingRecord sr)
-    {
-        if (!Target.Hit(ToLocal(ray), out tmin, sr))
-            return false;
-
-        var n = sr.Normal;
         var world = new Normal3D();
 
         #region GMac : TsrNormalToWorld
@@ -76,19 +48,16 @@ public sealed class TsrInstance : GeometricObject
         world.z = _tsr.scale * (_tsr.sinOverScale * (_tsr.kx * n.y - _tsr.ky * n.x) + tmp0 * _tsr.kz + _tsr.cosOverScale * n.z);
         #endregion
 
-        sr.Normal = world;
-        if (_material is not null)
-            sr.Material = _material;
-        return true;
+        return world;
     }
 
     public override BoundingBox GetBoundingBox()
     {
         var box = Target.GetBoundingBox().Map(_tsr.ToWorld);
-        return box.IsEmpty || !box.IsFinite ? box : box.Expanded(1e-9 * (1 + _tsr.scale));
+        return box.IsEmpty || !box.IsFinite ? box : box.Expanded(Tolerances.BoundsPadding * (1 + _tsr.scale));
     }
 
-    private Ray ToLocal(in Ray ray)
+    protected override Ray ToLocal(in Ray ray)
     {
         // The map keeps t (the direction is not renormalised), so the nearest distance accepted carries over.
         var local = new Ray { tMin = ray.tMin };

@@ -96,10 +96,6 @@ public readonly struct TsrTransform
         return new(origin, axis, radians, 0.5 * (sx + sy));
     }
 
-    /// <summary>The same map as a 4×4 matrix transform (translation · rotation · scale).</summary>
-    public AffineTransform ToAffineTransform() =>
-        AffineTransform.Translation(tx, ty, tz) * AffineTransform.Rotation(Axis, angle) * AffineTransform.Scaling(scale);
-
     /// <summary>t + s R(p), with Rodrigues' formula; used for bounds, not per ray.</summary>
     public Point3D ToWorld(Point3D p)
     {
@@ -122,7 +118,7 @@ public readonly struct TsrTransform
     // The rotor taking unit a onto unit b; when b = −a, the half turn about the unit `perpendicular` (⟂ a).
     private static Rotor3D RotorOntoOrHalfTurn(Vector3D a, Vector3D b, Vector3D perpendicular)
     {
-        if (Vector3D.Dot(a, b) > -1 + 1e-12)
+        if (Vector3D.Dot(a, b) > -1 + Tolerances.RelativeRounding)
             return OrientationKernels.RotorOnto(a, b);
         var axis = perpendicular - Vector3D.Dot(perpendicular, a) * a;
         return OrientationKernels.HalfTurn(axis.Normalized());

@@ -19,10 +19,4 @@ public static class TriangleTestCounters
         TriangleTest.PluckerEdges => PluckerEdges,
         _ => throw new ArgumentOutOfRangeException(nameof(test)),
     };
-
-    public static void ResetAll()
-    {
-        foreach (var test in Enum.GetValues<TriangleTest>())
-            For(test).Reset();
-    }
 }

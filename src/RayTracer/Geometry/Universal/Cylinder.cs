@@ -85,7 +85,7 @@ public sealed class Cylinder : GeometricObject
             Radius * Math.Sqrt(Math.Max(0, 1 - _unitAxis.x * _unitAxis.x)),
             Radius * Math.Sqrt(Math.Max(0, 1 - _unitAxis.y * _unitAxis.y)),
             Radius * Math.Sqrt(Math.Max(0, 1 - _unitAxis.z * _unitAxis.z)));
-        return new BoundingBox(Point3D.Min(BaseCenter, top) - e, Point3D.Max(BaseCenter, top) + e).Expanded(1e-9);
+        return new BoundingBox(Point3D.Min(BaseCenter, top) - e, Point3D.Max(BaseCenter, top) + e).Expanded(Tolerances.BoundsPadding);
     }
 
     /// <summary>part: 0 tube, 1 base cap, 2 top cap.</summary>

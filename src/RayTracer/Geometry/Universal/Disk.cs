@@ -72,7 +72,7 @@ public sealed class Disk : GeometricObject, ISampledShape
             Radius * Math.Sqrt(Math.Max(0, 1 - Normal.x * Normal.x)),
             Radius * Math.Sqrt(Math.Max(0, 1 - Normal.y * Normal.y)),
             Radius * Math.Sqrt(Math.Max(0, 1 - Normal.z * Normal.z)));
-        return new BoundingBox(Center - e, Center + e).Expanded(1e-9);
+        return new BoundingBox(Center - e, Center + e).Expanded(Tolerances.BoundsPadding);
     }
 
     /// <summary>Uniform over the area: radius ∝ sqrt(u).</summary>

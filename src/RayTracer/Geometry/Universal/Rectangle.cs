@@ -70,7 +70,7 @@ public sealed class Rectangle : GeometricObject, ISampledShape
         box.Include(Corner + A);
         box.Include(Corner + B);
         box.Include(Corner + A + B);
-        return box.Expanded(1e-9);
+        return box.Expanded(Tolerances.BoundsPadding);
     }
 
     public Point3D Sample(Point2D u) => Corner + u.x * A + u.y * B;

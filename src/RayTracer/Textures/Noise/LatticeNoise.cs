@@ -1,3 +1,4 @@
+using RayTracer.Maths;
 namespace RayTracer.Textures.Noise;
 
 /// <summary>
@@ -41,7 +42,7 @@ public abstract class LatticeNoise
             (_permutation[i], _permutation[j]) = (_permutation[j], _permutation[i]);
         }
 
-        _fbmMax = Math.Abs(gain - 1.0) < 1e-12 ? octaves : (1.0 - Math.Pow(gain, octaves)) / (1.0 - gain);
+        _fbmMax = Math.Abs(gain - 1.0) < Tolerances.RelativeRounding ? octaves : (1.0 - Math.Pow(gain, octaves)) / (1.0 - gain);
     }
 
     private int Perm(int i) => _permutation[i & Mask];

@@ -30,8 +30,6 @@ public sealed class PixelImage
         Data = data;
     }
 
-    public int Stride => Width * Channels;
-
     public byte this[int x, int y, int channel]
     {
         get => Data[(y * Width + x) * Channels + channel];

@@ -16,7 +16,7 @@ public class CompoundObjects_Hits
         var compound = new CompoundObject();
         compound.Add(far);
         compound.Add(near);
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         Assert.True(compound.Hit(new Ray(new Point3D(0, 0, 10), new Vector3D(0, 0, -1)), out double t, sr));
         Assert.Equal(7, t, 12);
         Assert.Equal(new Normal3D(0, 0, 1), sr.Normal);
@@ -29,7 +29,7 @@ public class CompoundObjects_Hits
     public void Solid_cylinder_is_closed_with_outward_normals()
     {
         var solid = new SolidCylinder(-1, 2, 1);
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         Assert.True(solid.Hit(new Ray(new Point3D(0.3, 10, 0.2), new Vector3D(0, -1, 0)), out double t, sr));
         Assert.Equal(8, t, 12);
         Assert.Equal(new Normal3D(0, 1, 0), sr.Normal);
@@ -50,7 +50,7 @@ public class CompoundObjects_Hits
         }
 
         var random = new SeededRandom(82);
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         for (int n = 0; n < 300; n++)
         {
             var ray = ImplicitSurfaceMarch.RandomRayTowards(random, 6, 1.5);

@@ -29,7 +29,7 @@ public class ConstructiveSolid_Hits
             _ => p => Math.Max(Ball(p, CenterA, 1), -Ball(p, CenterB, 0.8)),
         };
         var random = new SeededRandom(300 + (ulong)operation);
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         int hits = 0;
         for (int n = 0; n < 400; n++)
         {

@@ -44,7 +44,7 @@ public class GenericObjects_AgreeWithBruteForce
     {
         var (obj, f, accept, closed) = Make(name);
         var random = new SeededRandom((ulong)name.GetHashCode(StringComparison.Ordinal) & 0xffff);
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         int hits = 0;
         for (int n = 0; n < 250; n++)
         {

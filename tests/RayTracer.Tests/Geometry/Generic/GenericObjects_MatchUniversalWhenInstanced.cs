@@ -40,8 +40,8 @@ public class GenericObjects_MatchUniversalWhenInstanced
         var (generic, universal) = Make(name);
         var instance = new Instance(generic, Placement);
         var random = new SeededRandom(400 + (ulong)name.Length);
-        var a = new ShadingRecord(null);
-        var b = new ShadingRecord(null);
+        var a = new ShadingRecord();
+        var b = new ShadingRecord();
         int hits = 0;
         for (int n = 0; n < 2000; n++)
         {

@@ -13,8 +13,8 @@ internal static class HitComparison
     /// <summary>Returns how many of the rays hit.</summary>
     public static int AssertSameHits(GeometricObject expected, GeometricObject actual, IEnumerable<Ray> rays)
     {
-        var a = new ShadingRecord(null);
-        var b = new ShadingRecord(null);
+        var a = new ShadingRecord();
+        var b = new ShadingRecord();
         var hits = 0;
         foreach (var ray in rays)
         {

@@ -12,7 +12,7 @@ public class MeshTriangle_Shading
         var mesh = MeshSamples.Octahedron(true);
         var flat = mesh.CreateTriangles(smooth: false)[0]; // (1,0,0), (0,1,0), (0,0,1)
         var smooth = mesh.CreateTriangles(smooth: true)[0];
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         var centre = new Point3D(1.0 / 3, 1.0 / 3, 1.0 / 3);
         var ray = new Ray(new Point3D(2, 2, 2), centre - new Point3D(2, 2, 2));
 

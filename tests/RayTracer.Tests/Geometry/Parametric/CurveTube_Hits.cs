@@ -14,7 +14,7 @@ public class CurveTube_Hits
     {
         var tube = new CurveTube(new ClosedForms.Circle(1), Radius, Tolerance);
         var random = new Random(9);
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         for (var k = 0; k < 300; k++)
         {
             var a = 2 * Math.PI * random.NextDouble();
@@ -42,7 +42,7 @@ public class CurveTube_Hits
         Assert.Equal(2 * joints - 1, tube.PrimitiveCount);
 
         // A ray across the axis at any sample and any parameter between samples meets the tube.
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         var random = new Random(4);
         for (var k = 0; k < 200; k++)
         {
@@ -67,7 +67,7 @@ public class CurveTube_Hits
         var tube = new CurveTube(new ClosedForms.Circle(1), Radius, 1e-2);
         var material = RayTracer.Factories.MaterialFactory.Matte(RayTracer.Colors.RGBColor.White);
         tube.Material = material;
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         Assert.True(tube.Hit(new Ray(new Point3D(1, 0, 2), new Vector3D(0, 0, -1)), out _, sr));
         Assert.Same(material, sr.Material);
     }

@@ -25,7 +25,7 @@ public class TessellatedSurface_Hits
     {
         var surface = new TessellatedSurface(new ClosedForms.Sphere(1), Tolerance);
         var random = new Random(3);
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         for (var k = 0; k < 400; k++)
         {
             // Straight at the centre from distance 3: the sphere is 2 away, the inscribed mesh at most the tolerance farther.
@@ -55,7 +55,7 @@ public class TessellatedSurface_Hits
         var surface = new TessellatedSurface(new ClosedForms.Torus(1, 0.4), Tolerance);
         var exact = new RayTracer.Geometry.Generic.Torus(1, 0.4);
         var random = new Random(5);
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         var compared = 0;
         for (var k = 0; k < 600; k++)
         {
@@ -88,7 +88,7 @@ public class TessellatedSurface_Hits
         Assert.Equal(surface.Mesh.TriangleCount, surface.PrimitiveCount);
         var material = RayTracer.Factories.MaterialFactory.Matte(RayTracer.Colors.RGBColor.White);
         surface.Material = material;
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         Assert.True(surface.Hit(new Ray(new Point3D(0, 3, 1), new Vector3D(0, -1, 0)), out _, sr));
         Assert.Same(material, sr.Material);
     }

@@ -30,7 +30,7 @@ public class Cylinder_Hits
         }
 
         var random = new SeededRandom(71);
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         int hits = 0;
         for (int n = 0; n < 300; n++)
         {
@@ -56,7 +56,7 @@ public class Cylinder_Hits
     {
         var cyl = new Cylinder(Base, Axis, 0.75, capped: true);
         var a = Axis.Normalized();
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         Assert.True(cyl.Hit(new Ray(Base - 2 * a, a), out double t, sr));
         Assert.Equal(2, t, 12);
         Assert.True((sr.Normal.ToVector() + a).Length < 1e-12);

@@ -11,7 +11,7 @@ public class FlatPrimitives_Hits
     public void Plane_hit_is_at_the_analytic_distance()
     {
         var plane = new Plane(new Point3D(0, 1, 0), new Normal3D(0, 2, 0));
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         Assert.True(plane.Hit(new Ray(new Point3D(3, 5, 1), new Vector3D(1, -2, 0)), out double t, sr));
         Assert.Equal(2, t, 12);
         Assert.Equal(new Normal3D(0, 1, 0), sr.Normal);
@@ -40,7 +40,7 @@ public class FlatPrimitives_Hits
     public void Rectangle_reports_parametric_coordinates()
     {
         var rect = new Rectangle(new Point3D(0, 0, 0), new Vector3D(4, 0, 0), new Vector3D(0, 0, 2));
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         Assert.True(rect.Hit(new Ray(new Point3D(1, -5, 1.5), new Vector3D(0, 1, 0)), out double t, sr));
         Assert.Equal(5, t, 12);
         Assert.Equal(0.25, sr.TextureCoordinates.u, 12);
@@ -55,7 +55,7 @@ public class FlatPrimitives_Hits
     public void Triangle_hits_match_barycentric_construction()
     {
         var random = new SeededRandom(61);
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         for (int n = 0; n < 1000; n++)
         {
             Point3D a = RandomPoint(random), b = RandomPoint(random), c = RandomPoint(random);
@@ -86,7 +86,7 @@ public class FlatPrimitives_Hits
     public void Box_faces_and_inside_origins()
     {
         var box = new Box(new Point3D(-1, -1, -1), new Point3D(1, 2, 3));
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         Assert.True(box.Hit(new Ray(new Point3D(0, 0, 10), new Vector3D(0, 0, -1)), out double t, sr));
         Assert.Equal(7, t, 12);
         Assert.Equal(new Normal3D(0, 0, 1), sr.Normal);

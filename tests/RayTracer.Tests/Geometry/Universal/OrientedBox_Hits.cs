@@ -20,8 +20,8 @@ public class OrientedBox_Hits
         var instance = new Instance(new Box(new Point3D(-1.5, -0.5, -0.8), new Point3D(1.5, 0.5, 0.8)),
             AffineTransform.Translation(centre - Point3D.Origin) * rotation);
         var random = new SeededRandom(500);
-        var a = new ShadingRecord(null);
-        var b = new ShadingRecord(null);
+        var a = new ShadingRecord();
+        var b = new ShadingRecord();
         int hits = 0;
         for (int n = 0; n < 3000; n++)
         {

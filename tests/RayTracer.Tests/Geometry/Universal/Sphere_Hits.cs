@@ -12,7 +12,7 @@ public class Sphere_Hits
     [Fact]
     public void Head_on_ray_hits_at_distance_minus_radius()
     {
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         Assert.True(Unit.Hit(new Ray(new Point3D(1, 2, 13), new Vector3D(0, 0, -1)), out double t, sr));
         Assert.Equal(8, t, 12);
         Assert.Equal(new Normal3D(0, 0, 1), sr.Normal);
@@ -21,7 +21,7 @@ public class Sphere_Hits
     [Fact]
     public void Ray_from_inside_hits_the_far_side_with_outward_normal()
     {
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         Assert.True(Unit.Hit(new Ray(new Point3D(1, 2, 3), new Vector3D(0, 2, 0)), out double t, sr));
         Assert.Equal(1, t, 12); // direction length 2, radius 2
         Assert.Equal(1, sr.Normal.y, 12);
@@ -46,7 +46,7 @@ public class Sphere_Hits
     public void Random_hits_lie_on_the_surface_with_unit_outward_normals()
     {
         var random = new SeededRandom(51);
-        var sr = new ShadingRecord(null);
+        var sr = new ShadingRecord();
         int hits = 0;
         for (int n = 0; n < 2000; n++)
         {
@@ -83,6 +83,6 @@ public class Sphere_Hits
 
         // Uniform samples average to the centre (standard error about 0.008 per axis).
         Assert.True(mean.Length < 0.06, $"mean offset {mean}");
-        Assert.Equal(1 / (16 * Math.PI), Unit.Pdf(new ShadingRecord(null)), 15);
+        Assert.Equal(1 / (16 * Math.PI), Unit.Pdf(new ShadingRecord()), 15);
     }
 }

@@ -109,7 +109,7 @@ public class Gpcm_PlacedSurface
         // A ray aimed straight at the eye stops at the drawn camera (its eye ball or a wire of its
         // surface, 1.5 across), not at the gallery behind it.
         var aimed = new Ray(outside.Eye, toEye.Normalized());
-        var record = new ShadingRecord(world);
+        var record = new ShadingRecord();
         Assert.True(world.HitObjects(aimed, record));
         Assert.True(((Vector3D)record.HitPoint - (Vector3D)RayTracer.Scenes.Gpcm.GpcmGallery.Eye).Length <= 1.6);
     }

@@ -1,14 +1,16 @@
 using RayTracer.Colors;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Materials;
 using RayTracer.Maths;
+using RayTracer.Tests.Tracing;
 using RayTracer.Tracing;
 using RayTracer.Viewing;
 
-namespace RayTracer.Tests.Tracing;
+namespace RayTracer.Tests.Integrators;
 
-public class Whitted_ThroughputCut
+public class WhittedIntegrator_ThroughputCut
 {
     private static RenderResult Render(int maxDepth, double minimumThroughput) =>
         new Renderer(new RenderOptions { Threads = 2 }).RenderWithStatistics(GlassScene.Build(maxDepth, minimumThroughput));
@@ -19,7 +21,7 @@ public class Whitted_ThroughputCut
         // The ray at depth k has throughput kr^k; with kr = 0.5 and a threshold of 0.1 depths 0..3 are
         // traced (0.5^3 = 0.125) and depth 4 (0.0625) is not, although the depth limit is far away.
         const double ka = 0.3, kr = 0.5;
-        var world = TestScenes.OrthographicWorld(1, 0.01, w => new WhittedTracer(w));
+        var world = TestScenes.OrthographicWorld(1, 0.01, w => new WhittedIntegrator(w));
         world.ViewPlane.MaxDepth = 50;
         world.ViewPlane.MinimumThroughput = 0.1;
         var camera = new OrthographicCamera { Eye = new Point3D(0, 0, 1), LookAt = Point3D.Origin };

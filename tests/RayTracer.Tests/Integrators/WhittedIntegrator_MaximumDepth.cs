@@ -1,14 +1,16 @@
 using RayTracer.Colors;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Materials;
 using RayTracer.Maths;
+using RayTracer.Tests.Tracing;
 using RayTracer.Tracing;
 using RayTracer.Viewing;
 
-namespace RayTracer.Tests.Tracing;
+namespace RayTracer.Tests.Integrators;
 
-public class Whitted_MaximumDepth
+public class WhittedIntegrator_MaximumDepth
 {
     [Theory]
     [InlineData(0)]
@@ -20,7 +22,7 @@ public class Whitted_MaximumDepth
         // Between two parallel mirrors every bounce adds the ambient term ka·La and scales the rest by kr,
         // so a ray that may recurse to depth D carries ka·La · Σ_{k=0..D} kr^k.
         const double ka = 0.3, kr = 0.5, la = 1.0;
-        var world = TestScenes.OrthographicWorld(1, 0.01, w => new WhittedTracer(w));
+        var world = TestScenes.OrthographicWorld(1, 0.01, w => new WhittedIntegrator(w));
         world.ViewPlane.MaxDepth = maxDepth;
         var camera = new OrthographicCamera { Eye = new Point3D(0, 0, 1), LookAt = Point3D.Origin };
         camera.ComputeUVW();

@@ -1,15 +1,17 @@
 using RayTracer.Colors;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Materials;
 using RayTracer.Maths;
 using RayTracer.Sampling;
+using RayTracer.Tests.Tracing;
 using RayTracer.Tracing;
 using RayTracer.Viewing;
 
-namespace RayTracer.Tests.Tracing;
+namespace RayTracer.Tests.Integrators;
 
-public class PathTracer_Furnace
+public class PathIntegrator_Furnace
 {
     [Fact]
     public void White_objects_in_a_uniform_environment_have_the_environment_radiance()
@@ -17,7 +19,7 @@ public class PathTracer_Furnace
         // With albedo 1 everywhere and uniform incident radiance Le, the rendering equation's solution is Le
         // at every point and in every direction, however the objects shadow each other.
         const double le = 0.7;
-        var world = TestScenes.OrthographicWorld(8, 0.4, w => new PathTracer(w), samples: 16);
+        var world = TestScenes.OrthographicWorld(8, 0.4, w => new PathIntegrator(w), samples: 16);
         world.ViewPlane.MaxDepth = 40;
         world.Environment = new EnvironmentLight(new MultiJitteredSampler(16), le);
         world.Add(new Sphere(new Point3D(0, 0, 0), 1) { Material = new Matte(0, 1, RGBColor.White) });
@@ -39,7 +41,7 @@ public class PathTracer_Furnace
         const double le = 2.0, kd = 0.6;
         foreach (var useAreaLighting in new[] { false, true })
         {
-            var world = TestScenes.OrthographicWorld(5, 0.5, w => useAreaLighting ? new AreaLightingTracer(w) : new PathTracer(w), samples: 64);
+            var world = TestScenes.OrthographicWorld(5, 0.5, w => useAreaLighting ? new AreaLightingIntegrator(w) : new PathIntegrator(w), samples: 64);
             var environment = new EnvironmentLight(new MultiJitteredSampler(64), le);
             world.Environment = environment;
             if (useAreaLighting)

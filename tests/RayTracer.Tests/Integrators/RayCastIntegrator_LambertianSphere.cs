@@ -1,19 +1,21 @@
 using RayTracer.Colors;
 using RayTracer.Geometry.Universal;
+using RayTracer.Integrators;
 using RayTracer.Lights;
 using RayTracer.Materials;
 using RayTracer.Maths;
+using RayTracer.Tests.Tracing;
 using RayTracer.Tracing;
 using RayTracer.Viewing;
 
-namespace RayTracer.Tests.Tracing;
+namespace RayTracer.Tests.Integrators;
 
-public class RayCast_LambertianSphere
+public class RayCastIntegrator_LambertianSphere
 {
     [Fact]
     public void Pixels_match_the_analytic_radiance_of_a_point_lit_lambertian_sphere()
     {
-        var world = TestScenes.OrthographicWorld(21, 0.1, w => new RayCastTracer(w));
+        var world = TestScenes.OrthographicWorld(21, 0.1, w => new RayCastIntegrator(w));
         const double kd = 0.8;
         var cd = new RGBColor(1, 0.5, 0.25);
         world.Add(new Sphere(Point3D.Origin, 1) { Material = new Matte(0, kd, cd) });
@@ -52,7 +54,7 @@ public class RayCast_LambertianSphere
     {
         RGBColor Centre(bool lightShadows, bool blockerShadows)
         {
-            var world = TestScenes.OrthographicWorld(3, 0.01, w => new RayCastTracer(w));
+            var world = TestScenes.OrthographicWorld(3, 0.01, w => new RayCastIntegrator(w));
             world.Add(new Plane(Point3D.Origin, new Normal3D(0, 0, 1)) { Material = new Matte(0, 1, RGBColor.White) });
             world.Add(new Sphere(new Point3D(0, 0, 3), 0.5) { Material = new Matte(), CastsShadows = blockerShadows });
             world.Add(new PointLight(new Point3D(0, 0, 6)) { CastsShadows = lightShadows });
@@ -70,7 +72,7 @@ public class RayCast_LambertianSphere
     [Fact]
     public void Directional_and_ambient_light_add_up()
     {
-        var world = TestScenes.OrthographicWorld(1, 0.01, w => new RayCastTracer(w));
+        var world = TestScenes.OrthographicWorld(1, 0.01, w => new RayCastIntegrator(w));
         world.Add(new Plane(Point3D.Origin, new Normal3D(0, 0, 1)) { Material = new Matte(0.5, 0.6, new RGBColor(1, 1, 0)) });
         world.AmbientLight = new AmbientLight(0.4);
         world.Add(new DirectionalLight(new Vector3D(0, 1, 1), 2.0));
