@@ -37,6 +37,19 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
 
     public string Emit(CodeBlock block, CSharpEmitOptions options)
     {
+        var (top, body) = EmitParts(block, options);
+        var sb = new StringBuilder();
+        foreach (var line in top) sb.Append(options.Indent).Append(line).Append(options.NewLine);
+        return sb.Append(body).ToString();
+    }
+
+    /// <summary>
+    /// The block's code in two parts: statements that hold no value of the inputs (the statistics
+    /// comment, broadcast constants, values evaluated once), unindented, and the indented statements
+    /// after them. A batch loop keeps the first part out of its loop.
+    /// </summary>
+    internal (IReadOnlyList<string> Top, string Body) EmitParts(CodeBlock block, CSharpEmitOptions options)
+    {
         if (!ScalarTypes.Contains(options.ScalarType))
             throw new InvalidOperationException($"No C# code for scalar type '{options.ScalarType}'; expected {string.Join(" or ", ScalarTypes)}.");
         var temps = block.Temporaries.Select(t => t.Target).Distinct().ToList();
@@ -126,14 +139,12 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
             body.Append(target).Append(" = ").Append(holder).Append(';').Append(options.NewLine);
         }
 
-        var sb = new StringBuilder();
-        if (options.IncludeStatistics)
-            sb.Append(options.Indent).Append("// GMac: ").Append(block.Statistics()).Append(options.NewLine);
-        foreach (var top in writer.Prelude()) sb.Append(options.Indent).Append(top).Append(options.NewLine);
+        var top = new List<string>();
+        if (options.IncludeStatistics) top.Add("// GMac: " + block.Statistics());
+        top.AddRange(writer.Prelude());
         // Expressions with effects (calls, increments) run once, in binding order, before anything is written.
-        for (var k = 0; k < once.Count; k++)
-            sb.Append(options.Indent).Append("var ").Append(onceNames[k]).Append(" = ").Append(once[k].Trim()).Append(';').Append(options.NewLine);
-        return sb.Append(body).ToString();
+        for (var k = 0; k < once.Count; k++) top.Add($"var {onceNames[k]} = {once[k].Trim()};");
+        return (top, body.ToString());
     }
 
     /// <summary>The <c>Math</c> function for a neutral name (<c>MathF</c>'s with <paramref name="single"/>, so no value is widened to double).</summary>
