@@ -84,7 +84,28 @@ internal static class CSharpBatchEmitter
         var tailInputs = block.InputText.ToDictionary(x => x.Key, x => tailTexts.GetValueOrDefault(x.Key, x.Value), StringComparer.Ordinal);
         var tailTargets = block.OutputTargets.ToDictionary(x => x.Key, x => x.Value, StringComparer.Ordinal);
         foreach (var (key, collection) in outputs) tailTargets[key] = $"{collection}[{index}]";
-        var tailBlock = new CodeBlock(block.Statements, tailInputs, tailTargets);
+
+        // Values that read no span (a rotor's sine and cosine from one angle) are the same for every
+        // item: computed once, before the loops, in the element type, and broadcast where the vector loop reads them.
+        var (common, loopStatements) = Common(block, inputs.Where(i => i.Collection is null).Select(i => i.Name).ToHashSet(StringComparer.Ordinal));
+        var commonNames = common.ToDictionary(a => a.Target, _ => Fresh("common"), StringComparer.Ordinal);
+        if (common.Count > 0)
+        {
+            var commonBlock = new CodeBlock(common.Select(a => a with { IsOutput = true }),
+                tailInputs.Concat(commonNames).ToDictionary(StringComparer.Ordinal), commonNames);
+            var (_, commonBody) = CSharpScalarEmitter.Instance.EmitParts(commonBlock, options with
+            {
+                ScalarType = element,
+                IncludeStatistics = false,
+                DeclareOutputs = true,
+                MayOverwrite = (_, _) => false,
+                IsNameTaken = IsTaken,
+            });
+            code.Append(commonBody);
+        }
+        var loopReads = loopStatements.SelectMany(s => s.Expressions).SelectMany(e => e.DescendantsAndSelf()).OfType<VariableExpr>()
+            .Select(v => v.Name).ToHashSet(StringComparer.Ordinal);
+        var tailBlock = new CodeBlock(loopStatements, tailInputs.Concat(commonNames).ToDictionary(StringComparer.Ordinal), tailTargets);
 
         if (vector is null)
         {
@@ -98,16 +119,21 @@ internal static class CSharpBatchEmitter
             var family = vector.Family;
             var vectorInputs = new Dictionary<string, string>(StringComparer.Ordinal);
             var loads = new List<string>();
-            foreach (var (name, text, collection) in inputs)
+            var broadcasts = inputs.Where(i => i.Collection is null).Select(i => (i.Name, Text: i.Text.Trim()))
+                .Concat(commonNames.Select(c => (Name: c.Key, Text: c.Value)));
+            foreach (var (name, text) in broadcasts.Where(b => loopReads.Contains(b.Name)))
             {
-                var local = Fresh(collection is null ? "all" : "item");
-                vectorInputs[name] = local;
-                if (collection is null) Line(indent, $"{vector.Name} {local} = {family}.Create<{element}>({text.Trim()});");
-                else loads.Add($"{vector.Name} {local} = {family}.LoadUnsafe(ref {references[collection]}, (nuint){index});");
+                vectorInputs[name] = Fresh("all");
+                Line(indent, $"{vector.Name} {vectorInputs[name]} = {family}.Create<{element}>({text});");
+            }
+            foreach (var (name, _, collection) in inputs.Where(i => i.Collection is not null && loopReads.Contains(i.Name)))
+            {
+                vectorInputs[name] = Fresh("item");
+                loads.Add($"{vector.Name} {vectorInputs[name]} = {family}.LoadUnsafe(ref {references[collection!]}, (nuint){index});");
             }
             var vectorTargets = outputs.ToDictionary(o => o.Key, _ => Fresh("result"), StringComparer.Ordinal);
-            var vectorBlock = new CodeBlock(block.Statements,
-                block.InputText.ToDictionary(x => x.Key, x => vectorInputs.GetValueOrDefault(x.Key, x.Value), StringComparer.Ordinal),
+            var vectorBlock = new CodeBlock(loopStatements,
+                block.InputText.Keys.Concat(commonNames.Keys).ToDictionary(x => x, x => vectorInputs.GetValueOrDefault(x, block.InputText.GetValueOrDefault(x, "")), StringComparer.Ordinal),
                 block.OutputTargets.ToDictionary(x => x.Key, x => vectorTargets.GetValueOrDefault(x.Key, x.Value), StringComparer.Ordinal));
             var (top, body) = CSharpVectorEmitter.Instance.EmitParts(vectorBlock, options with
             {
@@ -144,6 +170,29 @@ internal static class CSharpBatchEmitter
         code.Append(tailBody);
         Line(indent, "}");
         return (code.ToString(), null);
+    }
+
+    /// <summary>
+    /// The temporaries that read only <paramref name="invariant"/> inputs and other such temporaries
+    /// (each assigned once), in order, and the statements left for the loop.
+    /// </summary>
+    private static (List<AssignmentStatement> Common, List<CodeStatement> Loop) Common(CodeBlock block, HashSet<string> invariant)
+    {
+        var assignments = block.Statements.OfType<AssignmentStatement>().GroupBy(a => a.Target, StringComparer.Ordinal).ToDictionary(g => g.Key, g => g.Count(), StringComparer.Ordinal);
+        var common = new List<AssignmentStatement>();
+        var names = new HashSet<string>(invariant, StringComparer.Ordinal);
+        var loop = new List<CodeStatement>();
+        foreach (var s in block.Statements)
+        {
+            if (s is AssignmentStatement { IsOutput: false } a && assignments[a.Target] == 1
+                && a.Value.DescendantsAndSelf().OfType<VariableExpr>().All(v => names.Contains(v.Name)))
+            {
+                common.Add(a);
+                names.Add(a.Target);
+            }
+            else loop.Add(s);
+        }
+        return (common, loop);
     }
 
     /// <summary>

@@ -11,12 +11,8 @@ namespace GMac.CSharp.Tests.BindingPoints;
 /// every item equals what the scalar code of the same macro gives for that item alone.
 /// </summary>
 [Collection(SharedDslCollection.Name)]
-public sealed class Generate_Batches : IDisposable
+public sealed class Generate_Batches
 {
-    private readonly TempFolder _temp = new();
-
-    public void Dispose() => _temp.Dispose();
-
     /// <summary>Each macro twice: as a batch over columns, and for one item (plain scalar code).</summary>
     private const string Source = """
         using System.Numerics;
@@ -31,8 +27,10 @@ public sealed class Generate_Batches : IDisposable
 
         public static class Kernels
         {
-            /// <summary>The same for every item of a batch (broadcast).</summary>
-            public static double Angle = 0.7;
+            /// <summary>The same for every item of a batch (broadcast); counts how often the code reads it.</summary>
+            public static double Angle { get { AngleReads++; return 0.7; } }
+
+            public static int AngleReads;
 
             public static int Lanes => Vector256<double>.Count;
 
@@ -157,16 +155,20 @@ public sealed class Generate_Batches : IDisposable
     {
         var text = Source.Replace("namespace Batches;", $"namespace {ns};", StringComparison.Ordinal)
             .Replace("Vector256<double>", vector, StringComparison.Ordinal);
-        return single ? text.Replace("double", "float", StringComparison.Ordinal).Replace("Angle = 0.7", "Angle = 0.7f", StringComparison.Ordinal) : text;
+        return single ? text.Replace("double", "float", StringComparison.Ordinal).Replace("return 0.7;", "return 0.7f;", StringComparison.Ordinal) : text;
     }
 
-    private Assembly GenerateAndLoad()
+    /// <summary>Generated and compiled once for the class: the files are gone after, the code stays loaded.</summary>
+    private static readonly Lazy<Assembly> Compiled = new(() =>
     {
-        var paths = Variants.Select(v => _temp.Write($"{v.Namespace}.cs", Variant(v.Namespace, v.Vector, v.Single))).ToArray();
-        var (exit, output, err) = Tool.Generate([_temp.Path]);
+        using var temp = new TempFolder();
+        var paths = Variants.Select(v => temp.Write($"{v.Namespace}.cs", Variant(v.Namespace, v.Vector, v.Single))).ToArray();
+        var (exit, output, err) = Tool.Generate([temp.Path]);
         Assert.True(exit == 0, err + output);
         return CSharpCompile.Load(paths);
-    }
+    });
+
+    private static Assembly GenerateAndLoad() => Compiled.Value;
 
     [Fact]
     public void Every_item_of_a_batch_equals_the_scalar_code_at_lengths_around_the_vector_width()
@@ -208,6 +210,28 @@ public sealed class Generate_Batches : IDisposable
         }
         Assert.True(failures.Count == 0, string.Join("\n", failures.Take(20)));
         Assert.True(compared > 300, $"only {compared} items compared");
+    }
+
+    [Fact]
+    public void What_reads_no_span_is_computed_once_per_batch_not_once_per_item()
+    {
+        var assembly = GenerateAndLoad();
+        foreach (var (ns, _, single) in Variants)
+        {
+            var type = assembly.GetType($"{ns}.Kernels")!;
+            var lanes = (int)type.GetProperty("Lanes")!.GetValue(null)!;
+            var reads = type.GetField("AngleReads")!;
+            int ReadsAt(int length)
+            {
+                reads.SetValue(null, 0);
+                type.GetMethod("RotateAboutAxisThroughPoint3D")!.Invoke(null, [Columns(9, length, single, () => 0.5), Columns(3, length, single, () => 0)]);
+                return (int)reads.GetValue(null)!;
+            }
+            var once = ReadsAt(1);
+            Assert.True(once > 0);
+            Assert.Equal(once, ReadsAt(lanes - 1));
+            Assert.Equal(once, ReadsAt(7 * lanes + 3));
+        }
     }
 
     [Fact]
