@@ -124,12 +124,12 @@ internal static class CSharpBatchEmitter
             foreach (var (name, text) in broadcasts.Where(b => loopReads.Contains(b.Name)))
             {
                 vectorInputs[name] = Fresh("all");
-                Line(indent, $"{vector.Name} {vectorInputs[name]} = {family}.Create<{element}>({text});");
+                Line(indent, $"var {vectorInputs[name]} = {family}.Create<{element}>({text});");
             }
             foreach (var (name, _, collection) in inputs.Where(i => i.Collection is not null && loopReads.Contains(i.Name)))
             {
                 vectorInputs[name] = Fresh("item");
-                loads.Add($"{vector.Name} {vectorInputs[name]} = {family}.LoadUnsafe(ref {references[collection!]}, (nuint){index});");
+                loads.Add($"var {vectorInputs[name]} = {family}.LoadUnsafe(ref {references[collection!]}, (nuint){index});");
             }
             var vectorTargets = outputs.ToDictionary(o => o.Key, _ => Fresh("result"), StringComparer.Ordinal);
             var vectorBlock = new CodeBlock(loopStatements,

@@ -86,6 +86,7 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
             : throw new InvalidOperationException($"'{name}' is neither an input nor a temporary of the block.");
 
         var writer = CreateWriter(options, VariableText, FreshName);
+        var declaredType = DeclaredType(options);
 
         // A value dropped into an output block's text stands among operators the emitter cannot see
         // ("2 * <w.e1>" with w.e1 = a - b must read 2 * (a - b)): only a name or a literal that is not
@@ -105,12 +106,12 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
             {
                 case AssignmentStatement { IsOutput: true } o when held.Contains(o):
                     var holder = $"{prefix}{temps.Count + deferred.Count}";
-                    line.Append(options.ScalarType).Append(' ').Append(holder).Append(" = ").Append(writer.Print(o.Value)).Append(';');
+                    line.Append(declaredType).Append(' ').Append(holder).Append(" = ").Append(writer.Print(o.Value)).Append(';');
                     deferred.Add((block.OutputTargets[o.Target].Trim(), holder));
                     break;
                 case AssignmentStatement { IsOutput: true } o:
                     var target = block.OutputTargets[o.Target].Trim();
-                    if (options.DeclareOutputs && declared.Add(target)) line.Append(options.ScalarType).Append(' ');
+                    if (options.DeclareOutputs && declared.Add(target)) line.Append(declaredType).Append(' ');
                     line.Append(target).Append(" = ").Append(writer.Print(o.Value)).Append(';');
                     break;
                 case AssignmentStatement t when sinCos.TryGetPair(t, out var pair):
@@ -121,7 +122,7 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
                     break;
                 case AssignmentStatement t:
                     var name = tempName[t.Target];
-                    if (declared.Add(name)) line.Append(options.ScalarType).Append(' ');
+                    if (declared.Add(name)) line.Append(declaredType).Append(' ');
                     line.Append(name).Append(" = ").Append(writer.Print(t.Value)).Append(';');
                     break;
                 case VerbatimStatement v:
@@ -135,7 +136,7 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
         foreach (var (target, holder) in deferred)
         {
             body.Append(options.Indent);
-            if (options.DeclareOutputs && declared.Add(target)) body.Append(options.ScalarType).Append(' ');
+            if (options.DeclareOutputs && declared.Add(target)) body.Append(declaredType).Append(' ');
             body.Append(target).Append(" = ").Append(holder).Append(';').Append(options.NewLine);
         }
 
@@ -146,6 +147,9 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
         for (var k = 0; k < once.Count; k++) top.Add($"var {onceNames[k]} = {once[k].Trim()};");
         return (top, body.ToString());
     }
+
+    /// <summary>How a local of the code is declared: its scalar type, or <c>var</c> where that type is the value's own.</summary>
+    protected virtual string DeclaredType(CSharpEmitOptions options) => options.ScalarType;
 
     /// <summary>The <c>Math</c> function for a neutral name (<c>MathF</c>'s with <paramref name="single"/>, so no value is widened to double).</summary>
     protected static string ScalarFunction(string f, bool single)

@@ -142,8 +142,8 @@ public sealed partial class Generate_ScalarType : IDisposable
     {
         var (exit, output, err) = Tool.Run("show", "SphereCentreAndRadius", "--dsl", Dsl, "--scalar", "vector256<DOUBLE>");
         Assert.True(exit == 0, err);
-        Assert.Contains("Vector256<double> tmpC0 = Vector256.Create(1.0);", output);
-        Assert.Contains("Vector256<double> tmp0 = tmpC0 / omega_no;", output);
+        Assert.Contains("var tmpC0 = Vector256.Create(1.0);", output);
+        Assert.Contains("var tmp0 = tmpC0 / omega_no;", output);
         Assert.Contains("radius_s = Vector256.Sqrt(", output);
 
         var path = _temp.Write("Spheres.cs", Source("", "//GMac.Type(\"Vector<float>\");"));
