@@ -4,13 +4,21 @@ using GMac.Benchmarks.Kernels.Vector;
 
 namespace GMac.Benchmarks.Applications;
 
-/// <summary>Times a kernel's vector forms against its generated scalar code (and the generated Vector256 against hand-written Vector256 code), in pairs.</summary>
-public sealed class VectorTimer(PairedRatioTimer timer)
+/// <summary>
+/// Times a kernel's vector forms against its generated scalar code (and the generated Vector256
+/// against hand-written Vector256 code), in pairs. Each form first runs for <paramref name="warmUp"/>:
+/// the vector functions of .NET (Sin, SinCos, Exp…) start as precompiled or quickly compiled code up
+/// to 10 times slower than the code the JIT replaces it with in the background, which on a loaded
+/// machine comes late; timed before that, a kernel calling them looks slower than its scalar code.
+/// </summary>
+public sealed class VectorTimer(PairedRatioTimer timer, TimeSpan warmUp)
 {
     public VectorTiming Measure(VectorKernel kernel)
     {
         var n = kernel.Count;
         void Scalar() => kernel.Scalar.Time(Variant.Generated);
+        WarmUp(Scalar);
+        foreach (var v in Enum.GetValues<VectorVariant>().Where(kernel.Supports)) WarmUp(() => kernel.Time(v));
         var v256 = timer.Pair(n, Scalar, () => kernel.Time(VectorVariant.Generated256));
         (double Ratio, double FirstNs, double SecondNs)? v512 = Vector512.IsHardwareAccelerated
             ? timer.Pair(n, Scalar, () => kernel.Time(VectorVariant.Generated512))
@@ -20,5 +28,11 @@ public sealed class VectorTimer(PairedRatioTimer timer)
             : null;
         return new VectorTiming(kernel.MacroName, v256.FirstNs, v256.SecondNs, v256.Ratio,
             v512?.SecondNs, v512?.Ratio, hand?.SecondNs, hand?.Ratio);
+    }
+
+    private void WarmUp(Action run)
+    {
+        var watch = System.Diagnostics.Stopwatch.StartNew();
+        do run(); while (watch.Elapsed < warmUp);
     }
 }
