@@ -7,9 +7,9 @@ namespace GMac.Benchmarks.Applications;
 /// <summary>
 /// Times a kernel's vector forms against its generated scalar code (and the generated Vector256
 /// against hand-written Vector256 code), in pairs. Each form first runs for <paramref name="warmUp"/>:
-/// the vector functions of .NET (Sin, SinCos, Exp…) start as precompiled or quickly compiled code up
-/// to 10 times slower than the code the JIT replaces it with in the background, which on a loaded
-/// machine comes late; timed before that, a kernel calling them looks slower than its scalar code.
+/// the vector functions of .NET (Sin, SinCos, Exp…) were measured up to 10 times slower in a process's
+/// first runs than after the JIT's final code replaced the first (late, on a loaded machine); timed
+/// before that, a kernel calling them looks slower than its scalar code.
 /// </summary>
 public sealed class VectorTimer(PairedRatioTimer timer, TimeSpan warmUp)
 {
