@@ -150,8 +150,11 @@ public sealed partial class Generate_ScalarType : IDisposable
         (exit, _, err) = Tool.Run("generate", path, "--dsl", Dsl, "--cache", Path.Combine(_temp.Path, "cache"), "--scalar", "Vector512<Float>");
         Assert.True(exit == 0, err);
         var bodies = Bodies(File.ReadAllText(path));
-        Assert.Contains("Vector512<float> centre_e1 = ", bodies[0]);
-        Assert.Contains("Vector<float> centre_e1 = ", bodies[1]);
+        // Locals are declared with var: the broadcast constants show each region's type.
+        Assert.Contains("var centre_e1 = ", bodies[0]);
+        Assert.Contains("Vector512.Create(1.0f)", bodies[0]);
+        Assert.Contains("var centre_e1 = ", bodies[1]);
+        Assert.Contains("Vector.Create(1.0f)", bodies[1]);
         Assert.Contains("Vector.SquareRoot(", bodies[1]);
     }
 
