@@ -55,7 +55,7 @@ public static class ReportCommand
             VectorKernelAgreement.Verify(k);
         }
         log.WriteLine($"report: the vector forms of {kernels.Count} kernels agree with their scalar code; timing them in pairs");
-        var timer = new VectorTimer(new PairedRatioTimer(pairs, TimeSpan.FromMilliseconds(sliceMs)), TimeSpan.FromMilliseconds(10 * sliceMs));
+        var timer = new VectorTimer(new PairedRatioTimer(pairs, TimeSpan.FromMilliseconds(sliceMs)), TimeSpan.FromMilliseconds(200));
         var rows = kernels.Select(timer.Measure).ToArray();
         return VectorTable.Section(rows, $"Times and ratios are medians over {pairs} back-to-back pairs of {sliceMs} ms slices (the ratio taken within each pair), on batches of {GaApplicationBenchmarks.BatchSize} items.");
     }
