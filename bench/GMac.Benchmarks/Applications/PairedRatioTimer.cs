@@ -12,40 +12,52 @@ namespace GMac.Benchmarks.Applications;
 /// </summary>
 public sealed class PairedRatioTimer(int pairs, TimeSpan sliceTime)
 {
-    public double GeneratedOverHand(IGaKernel kernel)
+    public double GeneratedOverHand(IGaKernel kernel) =>
+        Pair(kernel.Count, () => kernel.Time(Variant.Generated), () => kernel.Time(Variant.Hand)).Ratio;
+
+    /// <summary>
+    /// The median over the pairs of first / second (nanoseconds per item of a slice of each), and the
+    /// median nanoseconds per item of each; each action runs one whole batch of <paramref name="items"/>.
+    /// </summary>
+    public (double Ratio, double FirstNs, double SecondNs) Pair(int items, Action first, Action second)
     {
-        kernel.Time(Variant.Generated); // JIT and caches
-        kernel.Time(Variant.Hand);
+        first(); // JIT and caches
+        second();
         var ratios = new double[pairs];
+        var (a, b) = (new double[pairs], new double[pairs]);
         for (var p = 0; p < pairs; p++)
         {
-            double generated, hand;
             if (p % 2 == 0)
             {
-                generated = Slice(kernel, Variant.Generated);
-                hand = Slice(kernel, Variant.Hand);
+                a[p] = Slice(items, first);
+                b[p] = Slice(items, second);
             }
             else
             {
-                hand = Slice(kernel, Variant.Hand);
-                generated = Slice(kernel, Variant.Generated);
+                b[p] = Slice(items, second);
+                a[p] = Slice(items, first);
             }
-            ratios[p] = generated / hand;
+            ratios[p] = a[p] / b[p];
         }
-        Array.Sort(ratios);
-        return pairs % 2 == 1 ? ratios[pairs / 2] : (ratios[pairs / 2 - 1] + ratios[pairs / 2]) / 2;
+        return (Median(ratios), Median(a), Median(b));
+    }
+
+    private double Median(double[] values)
+    {
+        Array.Sort(values);
+        return pairs % 2 == 1 ? values[pairs / 2] : (values[pairs / 2 - 1] + values[pairs / 2]) / 2;
     }
 
     /// <summary>Nanoseconds per item over one slice: whole batches until the slice time is up.</summary>
-    private double Slice(IGaKernel kernel, Variant variant)
+    private double Slice(int items, Action run)
     {
         var batches = 0;
         var watch = Stopwatch.StartNew();
         do
         {
-            kernel.Time(variant);
+            run();
             batches++;
         } while (watch.Elapsed < sliceTime);
-        return watch.Elapsed.TotalNanoseconds / ((double)batches * kernel.Count);
+        return watch.Elapsed.TotalNanoseconds / ((double)batches * items);
     }
 }

@@ -49,6 +49,8 @@ public abstract partial class GaKernel<TIn, TOut> : IGaKernel where TIn : struct
 
     public IReadOnlyList<double> Output(Variant variant, int index) => Components(_outputs[variant][index]);
 
+    public IReadOnlyList<double> InputDoubles(int index) => StructFields.Doubles(_inputs[index]);
+
     protected abstract TIn CreateInput(Random random);
 
     protected abstract double[] Components(TOut value);

@@ -26,6 +26,9 @@ public interface IGaKernel
     /// </summary>
     void Time(Variant variant);
 
+    /// <summary>The doubles of input <paramref name="index"/>, in the order its struct declares them (nested structs in place).</summary>
+    IReadOnlyList<double> InputDoubles(int index);
+
     /// <summary>The output coefficients one variant wrote for item <paramref name="index"/> in its last run.</summary>
     IReadOnlyList<double> Output(Variant variant, int index);
 }

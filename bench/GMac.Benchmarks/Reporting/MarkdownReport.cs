@@ -8,7 +8,7 @@ namespace GMac.Benchmarks.Reporting;
 public static class MarkdownReport
 {
     public static string Render(IReadOnlyList<KernelRow> rows, GenerationTimings? generation, string mode, string command, string chartFileName,
-        IReadOnlyList<Accuracy.AccuracyRow>? accuracy = null, string? accuracySection = null)
+        IReadOnlyList<Accuracy.AccuracyRow>? accuracy = null, string? accuracySection = null, string? vectorSection = null)
     {
         var sb = new StringBuilder();
         void Line(string text = "") => sb.Append(text).Append('\n');
@@ -78,6 +78,8 @@ public static class MarkdownReport
         foreach (var r in rows)
             Line($"| {r.Kernel.MacroName} | {(r.GeneratedOperations is { } g ? g.ToString() : $"error: {r.GenerationError}")} | {r.Kernel.HandOperations} |");
         Line();
+
+        if (vectorSection is not null) sb.Append(vectorSection);
 
         if (accuracySection is not null) sb.Append(accuracySection);
 

@@ -2,6 +2,7 @@ using GMac.Benchmarks.Accuracy;
 using GMac.Benchmarks.Applications;
 using GMac.Benchmarks.Generation;
 using GMac.Benchmarks.Kernels;
+using GMac.Benchmarks.Kernels.Vector;
 using GMac.Dsl;
 using GMac.Dsl.Generation;
 using SafeFiles;
@@ -41,8 +42,32 @@ public static class ReportCommand
     private const int PairedRatioPairs = 41;
     private const int PairedRatioSliceMs = 25;
 
+    private const int VectorOnlyPairs = 11;
+    private const int VectorOnlySliceMs = 10;
+
+    /// <summary>Checks and times the vector forms of every kernel; the section of the report, with how it was timed.</summary>
+    public static string VectorSection(int pairs, int sliceMs, TextWriter log)
+    {
+        var kernels = VectorKernelCatalog.CreateAll();
+        foreach (var k in kernels)
+        {
+            k.Setup(GaApplicationBenchmarks.BatchSize, GaApplicationBenchmarks.Seed);
+            VectorKernelAgreement.Verify(k);
+        }
+        log.WriteLine($"report: the vector forms of {kernels.Count} kernels agree with their scalar code; timing them in pairs");
+        var timer = new VectorTimer(new PairedRatioTimer(pairs, TimeSpan.FromMilliseconds(sliceMs)), TimeSpan.FromMilliseconds(200));
+        var rows = kernels.Select(timer.Measure).ToArray();
+        return VectorTable.Section(rows, $"Times and ratios are medians over {pairs} back-to-back pairs of {sliceMs} ms slices (the ratio taken within each pair), on batches of {GaApplicationBenchmarks.BatchSize} items.");
+    }
+
     public static void Write(ReportOptions options, TextWriter log)
     {
+        if (options.VectorOnly)
+        {
+            log.WriteLine(LoadLine());
+            log.Write(VectorSection(VectorOnlyPairs, VectorOnlySliceMs, log));
+            return;
+        }
         var project = DslProject.Load(options.DslDirectory);
         if (project.HasErrors)
             throw new InvalidOperationException($"the DSL folder '{options.DslDirectory}' has errors: {project.Diagnostics.First(d => d.IsError)}");
@@ -94,16 +119,24 @@ public static class ReportCommand
             generation = new GenerationTimer(options.DslDirectory, warmRepeats: options.Quick ? 1 : 5).Measure();
         }
 
+        var vectorSection = options.Quick ? VectorSection(pairs: 3, sliceMs: 5, log) : VectorSection(PairedRatioPairs, PairedRatioSliceMs, log);
+
         var command = "dotnet run -c Release --project bench/GMac.Benchmarks -- report" + (options.Quick ? " --quick" : "");
         var mode = options.Quick ? "quick: Stopwatch, best of 3 rounds of 20 ms" : "full: BenchmarkDotNet in process, 4 warm-ups, 10 iterations of 200 ms, median; " +
             $"generated / hand timed in {PairedRatioPairs} back-to-back pairs of {PairedRatioSliceMs} ms slices, median of the pairs' ratios";
         var markdown = MarkdownReport.Render(rows, generation, mode, command, ChartFile,
-            accuracy, AccuracyTable.Section(accuracy, accuracyItems, GaApplicationBenchmarks.Seed));
+            accuracy, AccuracyTable.Section(accuracy, accuracyItems, GaApplicationBenchmarks.Seed), vectorSection);
         var png = BarChart.Render(timings);
 
         Directory.CreateDirectory(options.OutputDirectory);
         AtomicFile.Write(Path.Combine(options.OutputDirectory, ChartFile), png);
         AtomicFile.Write(Path.Combine(options.OutputDirectory, MarkdownFile), System.Text.Encoding.UTF8.GetBytes(markdown));
         log.WriteLine($"report: wrote {Path.Combine(options.OutputDirectory, MarkdownFile)} and {ChartFile}");
+    }
+
+    private static string LoadLine()
+    {
+        var load = File.Exists("/proc/loadavg") ? File.ReadAllText("/proc/loadavg").Trim() : "unknown";
+        return $"report --vector-only: {DateTime.UtcNow:yyyy-MM-dd HH:mm} UTC, {Environment.ProcessorCount} logical cores, load average {load}";
     }
 }

@@ -3,7 +3,10 @@ namespace GMac.Benchmarks.Reporting;
 /// <summary>Options of the <c>report</c> command.</summary>
 public sealed record ReportOptions(bool Quick, string OutputDirectory, string DslDirectory, bool SkipGeneration)
 {
-    public const string Usage = "usage: GMac.Benchmarks report [--quick] [--out DIR] [--dsl DIR] [--no-generation]";
+    /// <summary><c>--vector-only</c>: times only the vector section and prints it, writing no file.</summary>
+    public bool VectorOnly { get; init; }
+
+    public const string Usage = "usage: GMac.Benchmarks report [--quick] [--out DIR] [--dsl DIR] [--no-generation] [--vector-only]";
 
     /// <summary>Parses the arguments after <c>report</c>; null and a message on a usage error.</summary>
     public static ReportOptions? Parse(IReadOnlyList<string> args, out string? error)
@@ -11,6 +14,7 @@ public sealed record ReportOptions(bool Quick, string OutputDirectory, string Ds
         error = null;
         var quick = false;
         var skip = false;
+        var vectorOnly = false;
         string? output = null, dsl = null;
         for (var i = 0; i < args.Count; i++)
         {
@@ -18,6 +22,7 @@ public sealed record ReportOptions(bool Quick, string OutputDirectory, string Ds
             {
                 case "--quick": quick = true; break;
                 case "--no-generation": skip = true; break;
+                case "--vector-only": vectorOnly = true; break;
                 case "--out" or "--dsl" when i + 1 < args.Count:
                     if (args[i] == "--out") output = args[++i];
                     else dsl = args[++i];
@@ -36,7 +41,7 @@ public sealed record ReportOptions(bool Quick, string OutputDirectory, string Ds
             error = "cannot find the repository (GMac.sln) above the current folder; pass --out and --dsl";
             return null;
         }
-        return new ReportOptions(quick, output ?? Path.Combine(root!, "bench", "results"), dsl ?? Path.Combine(root!, "dsl"), skip);
+        return new ReportOptions(quick, output ?? Path.Combine(root!, "bench", "results"), dsl ?? Path.Combine(root!, "dsl"), skip) { VectorOnly = vectorOnly };
     }
 
     private static string? RepositoryRoot()

@@ -9,7 +9,7 @@ namespace GMac.CSharp.BindingPoints;
 
 /// <summary>
 /// Reads one <c>//GMac.Bind(…);</c>, <c>//GMac.AssumeMin(…);</c>, <c>//GMac.AssumeMax(…);</c> or
-/// <c>//GMac.Type("float");</c> line as the C# invocation it looks like, so string escapes and verbatim strings mean what they
+/// <c>//GMac.Type("float");</c> or <c>//GMac.Batch("i");</c> line as the C# invocation it looks like, so string escapes and verbatim strings mean what they
 /// mean in C#. A string-literal value is a template (its <c>&lt;…&gt;</c> parts are C# text); any
 /// other expression is bare C#. This is the one reader of the syntax: gmac and the benchmark
 /// report both go through it.
@@ -57,7 +57,7 @@ public static partial class BindingLineReader
                 Expression: MemberAccessExpressionSyntax { Expression: IdentifierNameSyntax { Identifier.ValueText: "GMac" } } member,
             } call)
         {
-            error = $"'//{code.Trim()}' is not a call of GMac.Bind, GMac.AssumeMin, GMac.AssumeMax or GMac.Type";
+            error = $"'//{code.Trim()}' is not a call of GMac.Bind, GMac.AssumeMin, GMac.AssumeMax, GMac.Type or GMac.Batch";
             return null;
         }
         var args = call.ArgumentList.Arguments;
@@ -111,8 +111,14 @@ public static partial class BindingLineReader
             case "Type":
                 error = "GMac.Type takes one string, the scalar type of the code: GMac.Type(\"float\") or GMac.Type(\"double\")";
                 return null;
+            case "Batch" when args.Count == 1 && StringValue(args[0]) is { } index && SyntaxFacts.IsValidIdentifier(index.Trim())
+                && SyntaxFacts.GetKeywordKind(index.Trim()) == SyntaxKind.None:
+                return new BatchSpec(index.Trim(), line, column);
+            case "Batch":
+                error = "GMac.Batch takes one string, the name of the item index the bindings read spans at: GMac.Batch(\"i\") with GMac.Bind(\"u.e1\", \"<ux[i]>\")";
+                return null;
             default:
-                error = $"unknown binding command 'GMac.{command}'; expected Bind, AssumeMin, AssumeMax or Type";
+                error = $"unknown binding command 'GMac.{command}'; expected Bind, AssumeMin, AssumeMax, Type or Batch";
                 return null;
         }
     }

@@ -106,6 +106,11 @@ internal static class BindingPointGenerator
         Func<string, bool> isTaken, List<Diagnostic> diagnostics)
     {
         if (ScalarTypeOf(file, point, context, diagnostics) is not { } scalarType) return new GeneratedRegion(point, null, null);
+        var batches = point.Specs.OfType<BatchSpec>().ToList();
+        foreach (var extra in batches.Skip(1))
+            diagnostics.Add(new(DiagnosticCodes.InvalidBatch, SourceSpan.At(file.Path, extra.Line, extra.Column),
+                $"a second GMac.Batch line; the binding point's batch index is already given at line {batches[0].Line}"));
+        if (batches.Count > 1) return new GeneratedRegion(point, null, null);
         GenerationOutcome outcome;
         string? code;
         (DiagnosticDescriptor Descriptor, string Message)? problem;
@@ -120,7 +125,7 @@ internal static class BindingPointGenerator
                 ScalarType = scalarType,
                 DeclareOutputs = generated.Plan?.DefaultOutputs ?? false,
                 MayOverwrite = BindingExpressions.Overwrites(generated.Result!.Block, point.Scope.Storage),
-            });
+            }, batches.FirstOrDefault()?.Index);
         }
         catch (Exception e) when (e is not OutOfMemoryException)
         {
@@ -137,7 +142,13 @@ internal static class BindingPointGenerator
             else diagnostics.Add(e);
         }
         if (problem is { } p)
-            diagnostics.Add(new(p.Descriptor, SourceSpan.At(file.Path, point.RegionLineNumber, point.RegionColumn), p.Message));
+        {
+            // What makes a batch wrong is in its bindings: point at the Batch line that asks for the loop.
+            var at = p.Descriptor == DiagnosticCodes.InvalidBatch && batches.Count > 0
+                ? SourceSpan.At(file.Path, batches[0].Line, batches[0].Column)
+                : SourceSpan.At(file.Path, point.RegionLineNumber, point.RegionColumn);
+            diagnostics.Add(new(p.Descriptor, at, p.Message));
+        }
         return code is null ? new GeneratedRegion(point, outcome, null) : new GeneratedRegion(point, outcome, code) { ScalarType = scalarType };
     }
 

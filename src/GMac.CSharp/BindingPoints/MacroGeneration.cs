@@ -16,8 +16,10 @@ internal static class MacroGeneration
     /// (a constant out of the scalar type's range; an emitter defect), for the caller to report at its position.
     /// </summary>
     /// <param name="options">The printing choices, which may depend on the outcome (default outputs, aliasing).</param>
+    /// <param name="batchIndex">The index of a <c>//GMac.Batch</c> line: the code is a loop over spans read at it.</param>
     public static (GenerationOutcome Outcome, string? Code, (DiagnosticDescriptor Descriptor, string Message)? Problem) GenerateCode(GenerationContext context,
-        string macroName, IReadOnlyList<BindingSpec> specs, int regionLine, string filePath, Func<GenerationOutcome, CSharpEmitOptions> options)
+        string macroName, IReadOnlyList<BindingSpec> specs, int regionLine, string filePath, Func<GenerationOutcome, CSharpEmitOptions> options,
+        string? batchIndex = null)
     {
         var outcome = Generate(context, macroName, specs, regionLine, filePath);
         if (!outcome.Succeeded) return (outcome, null, null);
@@ -26,6 +28,11 @@ internal static class MacroGeneration
             return (outcome, null, (DiagnosticCodes.ConstantOutOfRange, $"macro '{macroName}' cannot be generated in {printing.ScalarType}: {range}"));
         try
         {
+            if (batchIndex is not null)
+            {
+                var (batch, batchProblem) = CSharpBatchEmitter.Emit(outcome.Result.Block, batchIndex, macroName, printing);
+                return (outcome, batch, batchProblem is null ? null : (DiagnosticCodes.InvalidBatch, batchProblem));
+            }
             return (outcome, CSharpEmitter.Emit(outcome.Result.Block, printing), null);
         }
         catch (InvalidOperationException e)

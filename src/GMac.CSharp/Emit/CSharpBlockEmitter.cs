@@ -37,6 +37,19 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
 
     public string Emit(CodeBlock block, CSharpEmitOptions options)
     {
+        var (top, body) = EmitParts(block, options);
+        var sb = new StringBuilder();
+        foreach (var line in top) sb.Append(options.Indent).Append(line).Append(options.NewLine);
+        return sb.Append(body).ToString();
+    }
+
+    /// <summary>
+    /// The block's code in two parts: statements that hold no value of the inputs (the statistics
+    /// comment, broadcast constants, values evaluated once), unindented, and the indented statements
+    /// after them. A batch loop keeps the first part out of its loop.
+    /// </summary>
+    internal (IReadOnlyList<string> Top, string Body) EmitParts(CodeBlock block, CSharpEmitOptions options)
+    {
         if (!ScalarTypes.Contains(options.ScalarType))
             throw new InvalidOperationException($"No C# code for scalar type '{options.ScalarType}'; expected {string.Join(" or ", ScalarTypes)}.");
         var temps = block.Temporaries.Select(t => t.Target).Distinct().ToList();
@@ -73,6 +86,7 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
             : throw new InvalidOperationException($"'{name}' is neither an input nor a temporary of the block.");
 
         var writer = CreateWriter(options, VariableText, FreshName);
+        var declaredType = DeclaredType(options);
 
         // A value dropped into an output block's text stands among operators the emitter cannot see
         // ("2 * <w.e1>" with w.e1 = a - b must read 2 * (a - b)): only a name or a literal that is not
@@ -92,12 +106,12 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
             {
                 case AssignmentStatement { IsOutput: true } o when held.Contains(o):
                     var holder = $"{prefix}{temps.Count + deferred.Count}";
-                    line.Append(options.ScalarType).Append(' ').Append(holder).Append(" = ").Append(writer.Print(o.Value)).Append(';');
+                    line.Append(declaredType).Append(' ').Append(holder).Append(" = ").Append(writer.Print(o.Value)).Append(';');
                     deferred.Add((block.OutputTargets[o.Target].Trim(), holder));
                     break;
                 case AssignmentStatement { IsOutput: true } o:
                     var target = block.OutputTargets[o.Target].Trim();
-                    if (options.DeclareOutputs && declared.Add(target)) line.Append(options.ScalarType).Append(' ');
+                    if (options.DeclareOutputs && declared.Add(target)) line.Append(declaredType).Append(' ');
                     line.Append(target).Append(" = ").Append(writer.Print(o.Value)).Append(';');
                     break;
                 case AssignmentStatement t when sinCos.TryGetPair(t, out var pair):
@@ -108,7 +122,7 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
                     break;
                 case AssignmentStatement t:
                     var name = tempName[t.Target];
-                    if (declared.Add(name)) line.Append(options.ScalarType).Append(' ');
+                    if (declared.Add(name)) line.Append(declaredType).Append(' ');
                     line.Append(name).Append(" = ").Append(writer.Print(t.Value)).Append(';');
                     break;
                 case VerbatimStatement v:
@@ -122,19 +136,20 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
         foreach (var (target, holder) in deferred)
         {
             body.Append(options.Indent);
-            if (options.DeclareOutputs && declared.Add(target)) body.Append(options.ScalarType).Append(' ');
+            if (options.DeclareOutputs && declared.Add(target)) body.Append(declaredType).Append(' ');
             body.Append(target).Append(" = ").Append(holder).Append(';').Append(options.NewLine);
         }
 
-        var sb = new StringBuilder();
-        if (options.IncludeStatistics)
-            sb.Append(options.Indent).Append("// GMac: ").Append(block.Statistics()).Append(options.NewLine);
-        foreach (var top in writer.Prelude()) sb.Append(options.Indent).Append(top).Append(options.NewLine);
+        var top = new List<string>();
+        if (options.IncludeStatistics) top.Add("// GMac: " + block.Statistics());
+        top.AddRange(writer.Prelude());
         // Expressions with effects (calls, increments) run once, in binding order, before anything is written.
-        for (var k = 0; k < once.Count; k++)
-            sb.Append(options.Indent).Append("var ").Append(onceNames[k]).Append(" = ").Append(once[k].Trim()).Append(';').Append(options.NewLine);
-        return sb.Append(body).ToString();
+        for (var k = 0; k < once.Count; k++) top.Add($"var {onceNames[k]} = {once[k].Trim()};");
+        return (top, body.ToString());
     }
+
+    /// <summary>How a local of the code is declared: its scalar type, or <c>var</c> where that type is the value's own.</summary>
+    protected virtual string DeclaredType(CSharpEmitOptions options) => options.ScalarType;
 
     /// <summary>The <c>Math</c> function for a neutral name (<c>MathF</c>'s with <paramref name="single"/>, so no value is widened to double).</summary>
     protected static string ScalarFunction(string f, bool single)

@@ -21,6 +21,12 @@ public sealed class CSharpVectorEmitter : CSharpBlockEmitter
     /// <summary><c>Vector128&lt;double&gt;</c>, <c>Vector128&lt;float&gt;</c>, … <c>Vector&lt;float&gt;</c>.</summary>
     public override IReadOnlyList<string> ScalarTypes { get; } = VectorType.All.Select(v => v.Name).ToList();
 
+    /// <summary>
+    /// <c>var</c>: every value of vector code is of the vector type (operators on vectors, loads,
+    /// broadcasts), and the type spelled out at each local is what C# style rules flag.
+    /// </summary>
+    protected override string DeclaredType(CSharpEmitOptions options) => "var";
+
     protected override ValueWriter CreateWriter(CSharpEmitOptions options, Func<string, string> variableText, Func<string, string> freshName) =>
         new Writer(VectorType.Find(options.ScalarType)!, variableText, freshName);
 
@@ -67,7 +73,7 @@ public sealed class CSharpVectorEmitter : CSharpBlockEmitter
             var literal = ScalarLiteral(c, type.IsSingle);
             if (_constants.TryGetValue(literal, out var name)) return name;
             name = _constants[literal] = freshName("C");
-            _prelude.Add($"{type.Name} {name} = {type.Family}.Create({literal});");
+            _prelude.Add($"var {name} = {type.Family}.Create({literal});");
             return name;
         }
 
@@ -92,13 +98,13 @@ public sealed class CSharpVectorEmitter : CSharpBlockEmitter
             var result = freshName("L");
             if (type.HasFixedWidth)
             {
-                _before.Add($"{type.Name} {result} = {type.Family}.Create({string.Join(", ", Enumerable.Range(0, type.Lanes).Select(i => Lane(i.ToString(System.Globalization.CultureInfo.InvariantCulture))))});");
+                _before.Add($"var {result} = {type.Family}.Create({string.Join(", ", Enumerable.Range(0, type.Lanes).Select(i => Lane(i.ToString(System.Globalization.CultureInfo.InvariantCulture))))});");
             }
             else
             {
                 // Vector<T> has as many lanes as the machine gives it: a loop over them.
                 var i = freshName("I");
-                _before.Add($"{type.Name} {result} = {type.Name}.Zero;");
+                _before.Add($"var {result} = {type.Name}.Zero;");
                 _before.Add($"for (var {i} = 0; {i} < {type.Name}.Count; {i}++) {result} = {result}.WithElement({i}, {Lane(i)});");
             }
             return new VariableExpr(LaneMarker + result);
@@ -110,7 +116,7 @@ public sealed class CSharpVectorEmitter : CSharpBlockEmitter
             var text = Print(a);
             if (a is VariableExpr && IsSimple(text)) return text;
             var name = freshName("L");
-            _before.Add(new StringBuilder().Append(type.Name).Append(' ').Append(name).Append(" = ").Append(text).Append(';').ToString());
+            _before.Add(new StringBuilder().Append("var ").Append(name).Append(" = ").Append(text).Append(';').ToString());
             return name;
         }
     }

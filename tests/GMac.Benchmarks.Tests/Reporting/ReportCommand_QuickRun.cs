@@ -29,6 +29,11 @@ public class ReportCommand_QuickRun
                 Assert.Contains($"| {KernelCatalog.Names[i]} |", row);
             }
             Assert.Contains(markdown, l => l.StartsWith("## Goals", StringComparison.Ordinal));
+            var vector = Array.FindIndex(markdown, l => l.StartsWith("| kernel | scalar ns | Vector256 ns", StringComparison.Ordinal));
+            Assert.True(vector > header, "no vector table");
+            for (var i = 0; i < KernelCatalog.Names.Count; i++)
+                Assert.StartsWith($"| {KernelCatalog.Names[i]} |", markdown[vector + 2 + i]);
+            Assert.StartsWith("| geometric mean |", markdown[vector + 2 + KernelCatalog.Names.Count]);
             var png = File.ReadAllBytes(Path.Combine(folder, ReportCommand.ChartFile));
             Assert.Equal(0x89, png[0]);
             Assert.Empty(Directory.GetFiles(folder, "*.tmp"));
@@ -37,6 +42,16 @@ public class ReportCommand_QuickRun
         {
             Directory.Delete(folder, recursive: true);
         }
+    }
+
+    [Fact]
+    public void Vector_only_is_an_option_of_its_own()
+    {
+        var options = ReportOptions.Parse(["--vector-only", "--out", "o", "--dsl", "d"], out var error);
+        Assert.Null(error);
+        Assert.True(options!.VectorOnly);
+        Assert.False(ReportOptions.Parse(["--quick", "--out", "o", "--dsl", "d"], out _)!.VectorOnly);
+        Assert.Contains("--vector-only", ReportOptions.Usage);
     }
 
     [Fact]

@@ -34,8 +34,8 @@ public sealed partial class CSharpVectorEmitter_Lanes
         var code = CSharpEmitter.Emit(block, new CSharpEmitOptions { ScalarType = "Vector256<double>" });
         var lines = code.Split('\n', StringSplitOptions.RemoveEmptyEntries);
         Assert.Single(Regex.Matches(code, @"Vector256\.Create\(2\.0\)"));
-        Assert.Equal("Vector256<double> tmpC0 = Vector256.Create(2.0);", lines[0]);
-        Assert.Equal("Vector256<double> tmp0 = tmpC0 * a;", lines[2]);
+        Assert.Equal("var tmpC0 = Vector256.Create(2.0);", lines[0]);
+        Assert.Equal("var tmp0 = tmpC0 * a;", lines[2]);
         Assert.Contains("x = tmp0 + tmpC0 * b;", lines);
         Assert.DoesNotMatch(@"[^C]\d\.\d", string.Join("\n", lines.Skip(2)));
     }
@@ -44,7 +44,7 @@ public sealed partial class CSharpVectorEmitter_Lanes
     public void Constant_names_avoid_names_taken_where_the_code_goes()
     {
         var code = CSharpEmitter.Emit(Block(Product(Constant(3), A)), new CSharpEmitOptions { ScalarType = "Vector128<float>", IsNameTaken = n => n == "tmpC0" });
-        Assert.Equal("Vector128<float> tmpC1 = Vector128.Create(3.0f);\no0Target = tmpC1 * a;\n", code);
+        Assert.Equal("var tmpC1 = Vector128.Create(3.0f);\no0Target = tmpC1 * a;\n", code);
     }
 
     [Theory]
@@ -67,8 +67,8 @@ public sealed partial class CSharpVectorEmitter_Lanes
     {
         var code = CSharpEmitter.Emit(Block(Call("atan2", Sum(A, B), A)), new CSharpEmitOptions { ScalarType = "Vector128<double>" });
         Assert.Equal(
-            "Vector128<double> tmpL0 = a + b;\n" +
-            "Vector128<double> tmpL1 = Vector128.Create(Math.Atan2(tmpL0.GetElement(0), a.GetElement(0)), Math.Atan2(tmpL0.GetElement(1), a.GetElement(1)));\n" +
+            "var tmpL0 = a + b;\n" +
+            "var tmpL1 = Vector128.Create(Math.Atan2(tmpL0.GetElement(0), a.GetElement(0)), Math.Atan2(tmpL0.GetElement(1), a.GetElement(1)));\n" +
             "o0Target = tmpL1;\n", code);
     }
 

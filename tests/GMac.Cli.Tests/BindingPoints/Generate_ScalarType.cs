@@ -142,16 +142,19 @@ public sealed partial class Generate_ScalarType : IDisposable
     {
         var (exit, output, err) = Tool.Run("show", "SphereCentreAndRadius", "--dsl", Dsl, "--scalar", "vector256<DOUBLE>");
         Assert.True(exit == 0, err);
-        Assert.Contains("Vector256<double> tmpC0 = Vector256.Create(1.0);", output);
-        Assert.Contains("Vector256<double> tmp0 = tmpC0 / omega_no;", output);
+        Assert.Contains("var tmpC0 = Vector256.Create(1.0);", output);
+        Assert.Contains("var tmp0 = tmpC0 / omega_no;", output);
         Assert.Contains("radius_s = Vector256.Sqrt(", output);
 
         var path = _temp.Write("Spheres.cs", Source("", "//GMac.Type(\"Vector<float>\");"));
         (exit, _, err) = Tool.Run("generate", path, "--dsl", Dsl, "--cache", Path.Combine(_temp.Path, "cache"), "--scalar", "Vector512<Float>");
         Assert.True(exit == 0, err);
         var bodies = Bodies(File.ReadAllText(path));
-        Assert.Contains("Vector512<float> centre_e1 = ", bodies[0]);
-        Assert.Contains("Vector<float> centre_e1 = ", bodies[1]);
+        // Locals are declared with var: the broadcast constants show each region's type.
+        Assert.Contains("var centre_e1 = ", bodies[0]);
+        Assert.Contains("Vector512.Create(1.0f)", bodies[0]);
+        Assert.Contains("var centre_e1 = ", bodies[1]);
+        Assert.Contains("Vector.Create(1.0f)", bodies[1]);
         Assert.Contains("Vector.SquareRoot(", bodies[1]);
     }
 

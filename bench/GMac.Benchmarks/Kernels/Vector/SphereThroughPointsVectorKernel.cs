@@ -1,0 +1,259 @@
+using System.Runtime.Intrinsics;
+
+namespace GMac.Benchmarks.Kernels.Vector;
+
+/// <summary>SphereThroughPoints over columns: its binding point as a batch in Vector256 and Vector512.</summary>
+public sealed partial class SphereThroughPointsVectorKernel() : VectorKernel(new SphereThroughPointsKernel())
+{
+    protected override void Generated256(double[][] i, double[][] o)
+    {
+        Vec3Columns P1 = new(i, 0);
+        Vec3Columns P2 = new(i, 3);
+        Vec3Columns P3 = new(i, 6);
+        Vec3Columns P4 = new(i, 9);
+        var No = o[0];
+        var E1 = o[1];
+        var E2 = o[2];
+        var E3 = o[3];
+        var Ni = o[4];
+        #region GMac : SphereThroughPoints
+        //GMac.Type("Vector256<double>");
+        //GMac.Batch("k");
+        //GMac.Bind("p1", "ConformalPoint3D", "P1[k]");
+        //GMac.Bind("p2", "ConformalPoint3D", "P2[k]");
+        //GMac.Bind("p3", "ConformalPoint3D", "P3[k]");
+        //GMac.Bind("p4", "ConformalPoint3D", "P4[k]");
+        //GMac.Bind("omega.no", "<No[k]>");
+        //GMac.Bind("omega.e1", "<E1[k]>");
+        //GMac.Bind("omega.e2", "<E2[k]>");
+        //GMac.Bind("omega.e3", "<E3[k]>");
+        //GMac.Bind("omega.ni", "<Ni[k]>");
+        int count0 = P1.x.Length;
+        if (P1.y.Length != count0 || P1.z.Length != count0 || P2.x.Length != count0 || P2.y.Length != count0 || P2.z.Length != count0 || P3.x.Length != count0 || P3.y.Length != count0 || P3.z.Length != count0 || P4.x.Length != count0 || P4.y.Length != count0 || P4.z.Length != count0 || No.Length != count0 || E1.Length != count0 || E2.Length != count0 || E3.Length != count0 || Ni.Length != count0) throw new global::System.ArgumentException("SphereThroughPoints: the spans of a batch must have one length, that of P1.x: P1.y, P1.z, P2.x, P2.y, P2.z, P3.x, P3.y, P3.z, P4.x, P4.y, P4.z, No, E1, E2, E3, Ni");
+        ref double span0 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P1.x);
+        ref double span1 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P1.y);
+        ref double span2 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P1.z);
+        ref double span3 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P2.x);
+        ref double span4 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P2.y);
+        ref double span5 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P2.z);
+        ref double span6 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P3.x);
+        ref double span7 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P3.y);
+        ref double span8 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P3.z);
+        ref double span9 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P4.x);
+        ref double span10 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P4.y);
+        ref double span11 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P4.z);
+        ref double span12 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)No);
+        ref double span13 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)E1);
+        ref double span14 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)E2);
+        ref double span15 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)E3);
+        ref double span16 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)Ni);
+        var tmpC0 = Vector256.Create(0.5);
+        int k = 0;
+        for (; k <= count0 - Vector256<double>.Count; k += Vector256<double>.Count)
+        {
+            var item0 = Vector256.LoadUnsafe(ref span0, (nuint)k);
+            var item1 = Vector256.LoadUnsafe(ref span1, (nuint)k);
+            var item2 = Vector256.LoadUnsafe(ref span2, (nuint)k);
+            var item3 = Vector256.LoadUnsafe(ref span3, (nuint)k);
+            var item4 = Vector256.LoadUnsafe(ref span4, (nuint)k);
+            var item5 = Vector256.LoadUnsafe(ref span5, (nuint)k);
+            var item6 = Vector256.LoadUnsafe(ref span6, (nuint)k);
+            var item7 = Vector256.LoadUnsafe(ref span7, (nuint)k);
+            var item8 = Vector256.LoadUnsafe(ref span8, (nuint)k);
+            var item9 = Vector256.LoadUnsafe(ref span9, (nuint)k);
+            var item10 = Vector256.LoadUnsafe(ref span10, (nuint)k);
+            var item11 = Vector256.LoadUnsafe(ref span11, (nuint)k);
+            var tmp0 = item9 - item0;
+            var tmp1 = item10 - item1;
+            var tmp2 = item11 - item2;
+            var tmp3 = item1 * item1 + item0 * item0 + item2 * item2;
+            var tmp4 = tmpC0 * (item10 * item10 + item11 * item11 + item9 * item9 - tmp3);
+            var tmp5 = item6 - item0;
+            var tmp6 = item7 - item1;
+            var tmp7 = item8 - item2;
+            var tmp8 = tmpC0 * (item6 * item6 + item7 * item7 + item8 * item8 - tmp3);
+            var tmp9 = tmp1 * tmp5 - tmp0 * tmp6;
+            var tmp10 = tmp2 * tmp5 - tmp0 * tmp7;
+            var tmp11 = tmp2 * tmp6 - tmp1 * tmp7;
+            var tmp12 = tmp4 * tmp5 - tmp0 * tmp8;
+            var tmp13 = tmp4 * tmp6 - tmp1 * tmp8;
+            var tmp14 = tmp4 * tmp7 - tmp2 * tmp8;
+            var tmp15 = item3 - item0;
+            var tmp16 = item4 - item1;
+            var tmp17 = item5 - item2;
+            var tmp18 = tmpC0 * (item3 * item3 + item4 * item4 + item5 * item5 - tmp3);
+            var tmp19 = tmp16 * tmp10 - (tmp11 * tmp15 + tmp17 * tmp9);
+            var tmp20 = tmp13 * tmp15 + tmp18 * tmp9 - tmp12 * tmp16;
+            var tmp21 = tmp14 * tmp15 + tmp18 * tmp10 - tmp12 * tmp17;
+            var tmp22 = tmp11 * tmp18 + tmp14 * tmp16 - tmp13 * tmp17;
+            var result0 = tmp19;
+            var result1 = -tmp22;
+            var result2 = tmp21;
+            var result3 = -tmp20;
+            var result4 = tmp21 * item1 - tmpC0 * tmp19 * tmp3 - tmp20 * item2 - tmp22 * item0;
+            result0.StoreUnsafe(ref span12, (nuint)k);
+            result1.StoreUnsafe(ref span13, (nuint)k);
+            result2.StoreUnsafe(ref span14, (nuint)k);
+            result3.StoreUnsafe(ref span15, (nuint)k);
+            result4.StoreUnsafe(ref span16, (nuint)k);
+        }
+        for (; k < count0; k++)
+        {
+            double tmp0 = P4.x[k] - P1.x[k];
+            double tmp1 = P4.y[k] - P1.y[k];
+            double tmp2 = P4.z[k] - P1.z[k];
+            double tmp3 = P1.y[k] * P1.y[k] + P1.x[k] * P1.x[k] + P1.z[k] * P1.z[k];
+            double tmp4 = 0.5 * (P4.y[k] * P4.y[k] + P4.z[k] * P4.z[k] + P4.x[k] * P4.x[k] - tmp3);
+            double tmp5 = P3.x[k] - P1.x[k];
+            double tmp6 = P3.y[k] - P1.y[k];
+            double tmp7 = P3.z[k] - P1.z[k];
+            double tmp8 = 0.5 * (P3.x[k] * P3.x[k] + P3.y[k] * P3.y[k] + P3.z[k] * P3.z[k] - tmp3);
+            double tmp9 = tmp1 * tmp5 - tmp0 * tmp6;
+            double tmp10 = tmp2 * tmp5 - tmp0 * tmp7;
+            double tmp11 = tmp2 * tmp6 - tmp1 * tmp7;
+            double tmp12 = tmp4 * tmp5 - tmp0 * tmp8;
+            double tmp13 = tmp4 * tmp6 - tmp1 * tmp8;
+            double tmp14 = tmp4 * tmp7 - tmp2 * tmp8;
+            double tmp15 = P2.x[k] - P1.x[k];
+            double tmp16 = P2.y[k] - P1.y[k];
+            double tmp17 = P2.z[k] - P1.z[k];
+            double tmp18 = 0.5 * (P2.x[k] * P2.x[k] + P2.y[k] * P2.y[k] + P2.z[k] * P2.z[k] - tmp3);
+            double tmp19 = tmp16 * tmp10 - (tmp11 * tmp15 + tmp17 * tmp9);
+            double tmp20 = tmp13 * tmp15 + tmp18 * tmp9 - tmp12 * tmp16;
+            double tmp21 = tmp14 * tmp15 + tmp18 * tmp10 - tmp12 * tmp17;
+            double tmp22 = tmp11 * tmp18 + tmp14 * tmp16 - tmp13 * tmp17;
+            No[k] = tmp19;
+            E1[k] = -tmp22;
+            E2[k] = tmp21;
+            E3[k] = -tmp20;
+            Ni[k] = tmp21 * P1.y[k] - 0.5 * tmp19 * tmp3 - tmp20 * P1.z[k] - tmp22 * P1.x[k];
+        }
+        #endregion
+    }
+
+    protected override void Generated512(double[][] i, double[][] o)
+    {
+        Vec3Columns P1 = new(i, 0);
+        Vec3Columns P2 = new(i, 3);
+        Vec3Columns P3 = new(i, 6);
+        Vec3Columns P4 = new(i, 9);
+        var No = o[0];
+        var E1 = o[1];
+        var E2 = o[2];
+        var E3 = o[3];
+        var Ni = o[4];
+        #region GMac : SphereThroughPoints
+        //GMac.Type("Vector512<double>");
+        //GMac.Batch("k");
+        //GMac.Bind("p1", "ConformalPoint3D", "P1[k]");
+        //GMac.Bind("p2", "ConformalPoint3D", "P2[k]");
+        //GMac.Bind("p3", "ConformalPoint3D", "P3[k]");
+        //GMac.Bind("p4", "ConformalPoint3D", "P4[k]");
+        //GMac.Bind("omega.no", "<No[k]>");
+        //GMac.Bind("omega.e1", "<E1[k]>");
+        //GMac.Bind("omega.e2", "<E2[k]>");
+        //GMac.Bind("omega.e3", "<E3[k]>");
+        //GMac.Bind("omega.ni", "<Ni[k]>");
+        int count0 = P1.x.Length;
+        if (P1.y.Length != count0 || P1.z.Length != count0 || P2.x.Length != count0 || P2.y.Length != count0 || P2.z.Length != count0 || P3.x.Length != count0 || P3.y.Length != count0 || P3.z.Length != count0 || P4.x.Length != count0 || P4.y.Length != count0 || P4.z.Length != count0 || No.Length != count0 || E1.Length != count0 || E2.Length != count0 || E3.Length != count0 || Ni.Length != count0) throw new global::System.ArgumentException("SphereThroughPoints: the spans of a batch must have one length, that of P1.x: P1.y, P1.z, P2.x, P2.y, P2.z, P3.x, P3.y, P3.z, P4.x, P4.y, P4.z, No, E1, E2, E3, Ni");
+        ref double span0 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P1.x);
+        ref double span1 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P1.y);
+        ref double span2 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P1.z);
+        ref double span3 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P2.x);
+        ref double span4 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P2.y);
+        ref double span5 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P2.z);
+        ref double span6 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P3.x);
+        ref double span7 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P3.y);
+        ref double span8 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P3.z);
+        ref double span9 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P4.x);
+        ref double span10 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P4.y);
+        ref double span11 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P4.z);
+        ref double span12 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)No);
+        ref double span13 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)E1);
+        ref double span14 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)E2);
+        ref double span15 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)E3);
+        ref double span16 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)Ni);
+        var tmpC0 = Vector512.Create(0.5);
+        int k = 0;
+        for (; k <= count0 - Vector512<double>.Count; k += Vector512<double>.Count)
+        {
+            var item0 = Vector512.LoadUnsafe(ref span0, (nuint)k);
+            var item1 = Vector512.LoadUnsafe(ref span1, (nuint)k);
+            var item2 = Vector512.LoadUnsafe(ref span2, (nuint)k);
+            var item3 = Vector512.LoadUnsafe(ref span3, (nuint)k);
+            var item4 = Vector512.LoadUnsafe(ref span4, (nuint)k);
+            var item5 = Vector512.LoadUnsafe(ref span5, (nuint)k);
+            var item6 = Vector512.LoadUnsafe(ref span6, (nuint)k);
+            var item7 = Vector512.LoadUnsafe(ref span7, (nuint)k);
+            var item8 = Vector512.LoadUnsafe(ref span8, (nuint)k);
+            var item9 = Vector512.LoadUnsafe(ref span9, (nuint)k);
+            var item10 = Vector512.LoadUnsafe(ref span10, (nuint)k);
+            var item11 = Vector512.LoadUnsafe(ref span11, (nuint)k);
+            var tmp0 = item9 - item0;
+            var tmp1 = item10 - item1;
+            var tmp2 = item11 - item2;
+            var tmp3 = item1 * item1 + item0 * item0 + item2 * item2;
+            var tmp4 = tmpC0 * (item10 * item10 + item11 * item11 + item9 * item9 - tmp3);
+            var tmp5 = item6 - item0;
+            var tmp6 = item7 - item1;
+            var tmp7 = item8 - item2;
+            var tmp8 = tmpC0 * (item6 * item6 + item7 * item7 + item8 * item8 - tmp3);
+            var tmp9 = tmp1 * tmp5 - tmp0 * tmp6;
+            var tmp10 = tmp2 * tmp5 - tmp0 * tmp7;
+            var tmp11 = tmp2 * tmp6 - tmp1 * tmp7;
+            var tmp12 = tmp4 * tmp5 - tmp0 * tmp8;
+            var tmp13 = tmp4 * tmp6 - tmp1 * tmp8;
+            var tmp14 = tmp4 * tmp7 - tmp2 * tmp8;
+            var tmp15 = item3 - item0;
+            var tmp16 = item4 - item1;
+            var tmp17 = item5 - item2;
+            var tmp18 = tmpC0 * (item3 * item3 + item4 * item4 + item5 * item5 - tmp3);
+            var tmp19 = tmp16 * tmp10 - (tmp11 * tmp15 + tmp17 * tmp9);
+            var tmp20 = tmp13 * tmp15 + tmp18 * tmp9 - tmp12 * tmp16;
+            var tmp21 = tmp14 * tmp15 + tmp18 * tmp10 - tmp12 * tmp17;
+            var tmp22 = tmp11 * tmp18 + tmp14 * tmp16 - tmp13 * tmp17;
+            var result0 = tmp19;
+            var result1 = -tmp22;
+            var result2 = tmp21;
+            var result3 = -tmp20;
+            var result4 = tmp21 * item1 - tmpC0 * tmp19 * tmp3 - tmp20 * item2 - tmp22 * item0;
+            result0.StoreUnsafe(ref span12, (nuint)k);
+            result1.StoreUnsafe(ref span13, (nuint)k);
+            result2.StoreUnsafe(ref span14, (nuint)k);
+            result3.StoreUnsafe(ref span15, (nuint)k);
+            result4.StoreUnsafe(ref span16, (nuint)k);
+        }
+        for (; k < count0; k++)
+        {
+            double tmp0 = P4.x[k] - P1.x[k];
+            double tmp1 = P4.y[k] - P1.y[k];
+            double tmp2 = P4.z[k] - P1.z[k];
+            double tmp3 = P1.y[k] * P1.y[k] + P1.x[k] * P1.x[k] + P1.z[k] * P1.z[k];
+            double tmp4 = 0.5 * (P4.y[k] * P4.y[k] + P4.z[k] * P4.z[k] + P4.x[k] * P4.x[k] - tmp3);
+            double tmp5 = P3.x[k] - P1.x[k];
+            double tmp6 = P3.y[k] - P1.y[k];
+            double tmp7 = P3.z[k] - P1.z[k];
+            double tmp8 = 0.5 * (P3.x[k] * P3.x[k] + P3.y[k] * P3.y[k] + P3.z[k] * P3.z[k] - tmp3);
+            double tmp9 = tmp1 * tmp5 - tmp0 * tmp6;
+            double tmp10 = tmp2 * tmp5 - tmp0 * tmp7;
+            double tmp11 = tmp2 * tmp6 - tmp1 * tmp7;
+            double tmp12 = tmp4 * tmp5 - tmp0 * tmp8;
+            double tmp13 = tmp4 * tmp6 - tmp1 * tmp8;
+            double tmp14 = tmp4 * tmp7 - tmp2 * tmp8;
+            double tmp15 = P2.x[k] - P1.x[k];
+            double tmp16 = P2.y[k] - P1.y[k];
+            double tmp17 = P2.z[k] - P1.z[k];
+            double tmp18 = 0.5 * (P2.x[k] * P2.x[k] + P2.y[k] * P2.y[k] + P2.z[k] * P2.z[k] - tmp3);
+            double tmp19 = tmp16 * tmp10 - (tmp11 * tmp15 + tmp17 * tmp9);
+            double tmp20 = tmp13 * tmp15 + tmp18 * tmp9 - tmp12 * tmp16;
+            double tmp21 = tmp14 * tmp15 + tmp18 * tmp10 - tmp12 * tmp17;
+            double tmp22 = tmp11 * tmp18 + tmp14 * tmp16 - tmp13 * tmp17;
+            No[k] = tmp19;
+            E1[k] = -tmp22;
+            E2[k] = tmp21;
+            E3[k] = -tmp20;
+            Ni[k] = tmp21 * P1.y[k] - 0.5 * tmp19 * tmp3 - tmp20 * P1.z[k] - tmp22 * P1.x[k];
+        }
+        #endregion
+    }
+}
