@@ -1,0 +1,94 @@
+namespace GMac.Core.Algebra;
+
+public sealed partial class Multivector<T>
+{
+    // ---- functions on x + W, W a 4-vector whose square is a scalar -----------------------------------
+    //
+    // A bivector B of a 4D or 5D frame squares to β = s + W (a scalar and a 4-vector), and W = B∧B is
+    // a 4-blade there, so W² = ω is a scalar. 1 and W span a commutative algebra in which β lives and
+    // which commutes with B; a power series f evaluated at β is f_even + f_odd·W with
+    //   ω > 0, r = √ω:  f_even = (f(s + r) + f(s − r))/2,  f_odd = (f(s + r) − f(s − r))/(2r)
+    //   ω = 0:          f_even = f(s),                      f_odd = f′(s)
+    //   ω < 0, q = √−ω: f_even = Re f(s + iq),              f_odd = Im f(s + iq)/q
+    // (split, dual and complex numbers). This is the invariant decomposition of Roelfs and De Keninck
+    // written without splitting B: the eigenvalues s ± r are the squares of the commuting simple parts
+    // when both are real.
+
+    /// <summary>1e-40 (a subnormal float): keeps 0/0 out of the generated code; see <see cref="Angle"/>.</summary>
+    private static T Guard => RadicandGuard;
+
+    /// <summary>
+    /// f_odd·W for ω ≥ 0 from (f(s + r) − f(s − r))/2 and f′(s) without a division by zero:
+    /// (h·r + f′(s)·g)/(ω + g) is f_odd when ω ≫ g = 1e-40 and f′(s) at ω = 0; a symbolic ω that is
+    /// a square u² with W/u free of divisions gives h·(W/u) instead, exactly.
+    /// </summary>
+    private static Multivector<T> OddPart(Multivector<T> w, T omega, T r, T halfDifference, Func<T> derivative)
+    {
+        if (omega is Symbolic.Scalar o && o.TrySquareRoot(out var u) && !Symbolic.Scalar.IsZero(u)
+            && w.Terms.All(t => !(((Symbolic.Scalar)(object)t.Coefficient!) / u).HasDivision()))
+        {
+            // r was computed from the same root, so (f(s + r) − f(s − r))/2 pairs with W/u.
+            return (w / (T)(object)u).Scale(halfDifference);
+        }
+        return w.Scale((halfDifference * r + derivative() * Guard) / (omega + Guard));
+    }
+
+    /// <summary>The square root used for ω in <see cref="OddPart"/>: the exact root of a symbolic square.</summary>
+    private static T RootOf(T omega)
+    {
+        if (omega is Symbolic.Scalar o && o.TrySquareRoot(out var u) && !Symbolic.Scalar.IsZero(u)) return (T)(object)u;
+        return T.Sqrt(omega);
+    }
+
+    /// <summary>atan2 in either scalar domain.</summary>
+    private static T Atan2(T y, T x) => (y, x) switch
+    {
+        (Symbolic.Scalar sy, Symbolic.Scalar sx) => (T)(object)Symbolic.Scalar.Atan2(sy, sx),
+        (double dy, double dx) => (T)(object)Math.Atan2(dy, dx),
+        (float fy, float fx) => (T)(object)MathF.Atan2(fy, fx),
+        _ => throw new NotSupportedException($"atan2 of {typeof(T).Name}"),
+    };
+
+    /// <summary>
+    /// The 4-vector part of a square that must be a scalar plus a 4-vector whose own square is a
+    /// scalar (ω), or an error naming what was squared.
+    /// </summary>
+    private (Multivector<T> W, T Omega) FourVectorPart(Multivector<T> square, string what)
+    {
+        var w = square.Grade(4);
+        if (!Negligible(square.SelectGrades(g => g is not (0 or 4)), square))
+            throw new AlgebraException(Frame.Name,
+                $"{what} of {this} needs a square with grades 0 and 4 only (frames up to 5D), but it is {square}.");
+        if (w.IsZero) return (w, T.Zero);
+        var ww = w.Gp(w);
+        if (!Negligible(ww.SelectGrades(g => g != 0), ww))
+            throw new AlgebraException(Frame.Name,
+                $"{what} of {this} needs the 4-vector part of its square to be a blade (a 4D or 5D frame), but {w} squares to {ww}.");
+        return (w, ww.ScalarPart);
+    }
+
+    /// <summary>
+    /// Zero for symbolic scalars; for numbers, rounding of a sum that cancels (below 1e-12 of the
+    /// whole) is taken as zero too.
+    /// </summary>
+    private static bool Negligible(Multivector<T> rest, Multivector<T> whole)
+    {
+        if (rest.IsZero) return true;
+        if (typeof(T) == typeof(Symbolic.Scalar)) return false;
+        static double Size(Multivector<T> m) => m.Terms.Sum(t => Math.Abs(double.CreateChecked(t.Coefficient)));
+        return Size(rest) <= 1e-12 * Size(whole);
+    }
+
+    /// <summary>
+    /// f(x + W) for W² = ω known to be ≥ 0 (split or dual): (even, odd·W). The caller's f and f′ are
+    /// real functions on the real line (their arguments x ± √ω).
+    /// </summary>
+    private static (T Even, Multivector<T> OddW) OnSplitPair(T x, Multivector<T> w, T omega, Func<T, T> f, Func<T, T> derivative)
+    {
+        if (w.IsZero || T.IsZero(omega)) return (f(x), w.IsZero ? w : w.Scale(derivative(x)));
+        var r = RootOf(omega);
+        var (plus, minus) = (f(x + r), f(x - r));
+        var two = T.One + T.One;
+        return ((plus + minus) / two, OddPart(w, omega, r, (plus - minus) / two, () => derivative(x)));
+    }
+}
