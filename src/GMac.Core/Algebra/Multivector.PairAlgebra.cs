@@ -24,13 +24,35 @@ public sealed partial class Multivector<T>
     /// </summary>
     private static Multivector<T> OddPart(Multivector<T> w, T omega, T r, T halfDifference, Func<T> derivative)
     {
-        if (omega is Symbolic.Scalar o && o.TrySquareRoot(out var u) && !Symbolic.Scalar.IsZero(u)
-            && w.Terms.All(t => !(((Symbolic.Scalar)(object)t.Coefficient!) / u).HasDivision()))
+        if (omega is Symbolic.Scalar o && o.TrySquareRoot(out var u) && !Symbolic.Scalar.IsZero(u) && DivideExactly(w, u) is { } unit)
         {
             // r was computed from the same root, so (f(s + r) − f(s − r))/2 pairs with W/u.
-            return (w / (T)(object)u).Scale(halfDifference);
+            return unit.Scale(halfDifference);
         }
         return w.Scale((halfDifference * r + derivative() * Guard) / (omega + Guard));
+    }
+
+    /// <summary>
+    /// W/u when every coefficient of W divides by the polynomial u without a remainder (a
+    /// monomial quotient, or a constant multiple of u), else null.
+    /// </summary>
+    private static Multivector<T>? DivideExactly(Multivector<T> w, Symbolic.Scalar u)
+    {
+        var terms = new List<(BasisBlade, T)>();
+        foreach (var (blade, coefficient) in w.Terms)
+        {
+            var c = (Symbolic.Scalar)(object)coefficient!;
+            var quotient = c / u;
+            if (quotient.HasDivision())
+            {
+                if (c.Terms.Count != u.Terms.Count || c.Terms[0].Monomial != u.Terms[0].Monomial) return null;
+                var k = Symbolic.Scalar.Constant(c.Terms[0].Coefficient / u.Terms[0].Coefficient);
+                if (!Symbolic.Scalar.IsZero(c - k * u)) return null;
+                quotient = k;
+            }
+            terms.Add((blade, (T)(object)quotient));
+        }
+        return FromTerms(w.Frame, terms);
     }
 
     /// <summary>The square root used for ω in <see cref="OddPart"/>: the exact root of a symbolic square.</summary>
