@@ -22,7 +22,7 @@ public sealed partial class Multivector<T>
         var s = square.ScalarPart;
         var rotations = SignFromMetric() == -1;
         var omegaSign = rotations ? 1 : SignOf(omega);
-        (T Even, Multivector<T> OddW) c, sc;
+        PairValue c, sc;
         if (omegaSign is >= 0)
         {
             c = OnSplitPair(s, w, omega, x => CoshSinc(x, rotations).C, x => CoshSinc(x, rotations).S / (T.One + T.One));
@@ -42,10 +42,10 @@ public sealed partial class Multivector<T>
             var complex = OnComplexPair(s, w, -minus);
             var (c0, s0) = CoshSinc(s, false);
             var s1 = SincDerivative(s, false);
-            c = (split.C.Even + complex.C.Even - c0, split.C.OddW + complex.C.OddW - w.Scale(s0 / two));
-            sc = (split.S.Even + complex.S.Even - s0, split.S.OddW + complex.S.OddW - w.Scale(s1));
+            c = split.C + complex.C + new PairValue(-c0, -(s0 / two), w);
+            sc = split.S + complex.S + new PairValue(-s0, -s1, w);
         }
-        return FromScalar(Frame, c.Even) + c.OddW + Scale(sc.Even) + Gp(sc.OddW).Grade(2);
+        return c.AsMultivector(Frame) + sc.LeftTimes(this, m => m.Grade(2));
     }
 
     /// <summary>
@@ -92,7 +92,7 @@ public sealed partial class Multivector<T>
     /// whose imaginary parts over q need no q: with √(s + iq) = a + ib (q = 2ab, a² + b² = m = |s + iq|),
     /// Im C/q = ½·(sinh a/a)(sin b/b) and Im S/q = (cosh a·sin b/b − cos b·sinh a/a)/(2m), 1/6 at m = 0.
     /// </summary>
-    private static ((T Even, Multivector<T> OddW) C, (T Even, Multivector<T> OddW) S) OnComplexPair(T s, Multivector<T> w, T omega)
+    private static (PairValue C, PairValue S) OnComplexPair(T s, Multivector<T> w, T omega)
     {
         var two = T.One + T.One;
         var m = T.Sqrt(s * s - omega);
@@ -106,6 +106,6 @@ public sealed partial class Multivector<T>
         // sinh(a + ib)/(a + ib); at m = 0 the real part is g/g = 1.
         var reS = (a * sh * cb + b * ch * sb + Guard) / (m + Guard);
         var imS = (ch * sbc - cb * shc + Guard / T.CreateChecked(6)) / (two * m + Guard);
-        return ((ch * cb, w.Scale(shc * sbc / two)), (reS, w.Scale(imS)));
+        return (new PairValue(ch * cb, shc * sbc / two, w), new PairValue(reS, imS, w));
     }
 }

@@ -18,18 +18,41 @@ public sealed partial class Multivector<T>
     private static T Guard => RadicandGuard;
 
     /// <summary>
+    /// f(x + W) = Even + Σ coefficient·direction, the directions W or W/u. Kept apart so that a
+    /// product with the directions (B·W, a polynomial) is formed before the transcendental
+    /// coefficients multiply it: symbolic expressions stay small.
+    /// </summary>
+    private readonly record struct PairValue(T Even, (T Coefficient, Multivector<T> Direction)[] Odd)
+    {
+        public PairValue(T even, T coefficient, Multivector<T> direction) : this(even, [(coefficient, direction)]) { }
+
+        /// <summary>Even·<paramref name="left"/> + Σ coefficient·(left·direction), the product of left and this value.</summary>
+        public Multivector<T> LeftTimes(Multivector<T> left, Func<Multivector<T>, Multivector<T>> project)
+        {
+            var sum = left.Scale(Even);
+            foreach (var (coefficient, direction) in Odd)
+                if (!direction.IsZero) sum += project(left.Gp(direction)).Scale(coefficient);
+            return sum;
+        }
+
+        public Multivector<T> AsMultivector(Frame frame) => LeftTimes(Multivector<T>.FromScalar(frame, T.One), m => m);
+
+        public static PairValue operator +(PairValue a, PairValue b) => new(a.Even + b.Even, [.. a.Odd, .. b.Odd]);
+    }
+
+    /// <summary>
     /// f_odd·W for ω ≥ 0 from (f(s + r) − f(s − r))/2 and f′(s) without a division by zero:
     /// (h·r + f′(s)·g)/(ω + g) is f_odd when ω ≫ g = 1e-40 and f′(s) at ω = 0; a symbolic ω that is
     /// a square u² with W/u free of divisions gives h·(W/u) instead, exactly.
     /// </summary>
-    private static Multivector<T> OddPart(Multivector<T> w, T omega, T r, T halfDifference, Func<T> derivative)
+    private static (T Coefficient, Multivector<T> Direction) OddPart(Multivector<T> w, T omega, T r, T halfDifference, Func<T> derivative)
     {
         if (omega is Symbolic.Scalar o && o.TrySquareRoot(out var u) && !Symbolic.Scalar.IsZero(u) && DivideExactly(w, u) is { } unit)
         {
             // r was computed from the same root, so (f(s + r) − f(s − r))/2 pairs with W/u.
-            return unit.Scale(halfDifference);
+            return (halfDifference, unit);
         }
-        return w.Scale((halfDifference * r + derivative() * Guard) / (omega + Guard));
+        return ((halfDifference * r + derivative() * Guard) / (omega + Guard), w);
     }
 
     /// <summary>
@@ -102,15 +125,17 @@ public sealed partial class Multivector<T>
     }
 
     /// <summary>
-    /// f(x + W) for W² = ω known to be ≥ 0 (split or dual): (even, odd·W). The caller's f and f′ are
-    /// real functions on the real line (their arguments x ± √ω).
+    /// f(x + W) for W² = ω known to be ≥ 0 (split or dual). The caller's f and f′ are real functions
+    /// on the real line (their arguments x ± √ω).
     /// </summary>
-    private static (T Even, Multivector<T> OddW) OnSplitPair(T x, Multivector<T> w, T omega, Func<T, T> f, Func<T, T> derivative)
+    private static PairValue OnSplitPair(T x, Multivector<T> w, T omega, Func<T, T> f, Func<T, T> derivative)
     {
-        if (w.IsZero || T.IsZero(omega)) return (f(x), w.IsZero ? w : w.Scale(derivative(x)));
+        if (w.IsZero) return new PairValue(f(x), []);
+        if (T.IsZero(omega)) return new PairValue(f(x), derivative(x), w);
         var r = RootOf(omega);
         var (plus, minus) = (f(x + r), f(x - r));
         var two = T.One + T.One;
-        return ((plus + minus) / two, OddPart(w, omega, r, (plus - minus) / two, () => derivative(x)));
+        var (coefficient, direction) = OddPart(w, omega, r, (plus - minus) / two, () => derivative(x));
+        return new PairValue((plus + minus) / two, coefficient, direction);
     }
 }

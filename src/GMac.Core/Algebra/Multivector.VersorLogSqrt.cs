@@ -40,9 +40,8 @@ public sealed partial class Multivector<T>
         }
         if (SignOf(omega) is not > 0 && SignFromMetric() != -1)
             throw new AlgebraException(Frame.Name, $"log is defined here for rotors and motors; the 4-vector part of {this} squares to {omega}, which is not known to be ≥ 0.");
-        var (even, oddW) = OnSplitPair(c0, w, omega,
-            x => LogFactor(x, T.Abs(T.One - x * x)).Value, x => LogFactor(x, T.Abs(T.One - x * x)).Derivative);
-        return m2.Scale(even) + m2.Gp(oddW).Grade(2);
+        return OnSplitPair(c0, w, omega, x => LogFactor(x, T.Abs(T.One - x * x)).Value, x => LogFactor(x, T.Abs(T.One - x * x)).Derivative)
+            .LeftTimes(m2, m => m.Grade(2));
     }
 
     /// <summary>
@@ -74,7 +73,6 @@ public sealed partial class Multivector<T>
         if (SignOf(omega) is not >= 0 && SignFromMetric() != -1)
             throw new AlgebraException(Frame.Name, $"sqrt is defined here for rotors and motors; (1 + R)(1 + R)~ of {this} has a 4-vector part whose square is not known to be ≥ 0.");
         var two = T.One + T.One;
-        var (even, oddW) = OnSplitPair(x, w, omega, t => T.One / T.Sqrt(t), t => -T.One / (two * t * T.Sqrt(t)));
-        return n.Scale(even) + n.Gp(oddW);
+        return OnSplitPair(x, w, omega, t => T.One / T.Sqrt(t), t => -T.One / (two * t * T.Sqrt(t))).LeftTimes(n, m => m);
     }
 }

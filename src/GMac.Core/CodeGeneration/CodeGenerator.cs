@@ -39,7 +39,17 @@ public static class CodeGenerator
         }
         if (request.Join != JoinMode.Split)
         {
-            var evaluated = GenerationProfile.Time("evaluate joined", () => request.Evaluate(null));
+            SymbolicProgram evaluated;
+            try
+            {
+                evaluated = GenerationProfile.Time("evaluate joined", () => request.Evaluate(null));
+            }
+            catch (Algebra.AlgebraException e) when (e.ExceedsLimit && candidates.Count > 0)
+            {
+                // Fully expanded, the outputs are too large to write (exp of a log of a product):
+                // the split forms, which name intermediate values, stand.
+                return Ranked(candidates, request);
+            }
             // Optimizing a fully expanded block is the slowest step; skip it when it starts far
             // costlier than a form already found (sharing rarely recovers more than that). Lowering
             // stops as soon as the part lowered so far is past that bound.
@@ -48,6 +58,11 @@ public static class CodeGenerator
             if (joined is not null)
                 candidates.Add((forms.Optimized(joined, "joined"), JoinMode.Joined));
         }
+        return Ranked(candidates, request);
+    }
+
+    private static CodeGenerationResult Ranked(List<(CodeBlock Block, JoinMode Form)> candidates, CodeGenerationRequest request)
+    {
         // The cheapest form wins unless it is far less accurate; on a tie, the one with fewer temporaries, then the joined (simplest) form.
         var ranked = candidates
             .Select((c, i) => (c.Block, c.Form, Stats: c.Block.Statistics(), Index: i))

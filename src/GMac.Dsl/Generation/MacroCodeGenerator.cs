@@ -141,7 +141,16 @@ public sealed partial class MacroCodeGenerator
                 NameStatementsOnly = recorder?.StatementsOnly ?? false,
                 OutputText = (o, values) => statements.Add(Verbatim(o, values)),
             };
-            var results = _compiler.Evaluator.Evaluate(macro, inputs, observer);
+            IReadOnlyDictionary<VariableSymbol, Multivector<Scalar>> results;
+            try
+            {
+                results = _compiler.Evaluator.Evaluate(macro, inputs, observer);
+            }
+            catch (MacroEvaluationException e) when (recorder is null && join == JoinMode.Automatic && e.Descriptor == DiagnosticCodes.TooLarge)
+            {
+                // Only the fully expanded form is too large: the split forms were built first and stand.
+                throw new AlgebraException(null, e.Message) { ExceedsLimit = true };
+            }
             foreach (var (key, (parameter, blade, sign)) in outputs)
             {
                 var value = results.TryGetValue(parameter, out var mv) ? mv[new BasisBlade(blade)] : Scalar.Zero;
