@@ -146,10 +146,10 @@ public sealed partial class MacroCodeGenerator
             {
                 results = _compiler.Evaluator.Evaluate(macro, inputs, observer);
             }
-            catch (MacroEvaluationException e) when (recorder is null && join == JoinMode.Automatic && e.Descriptor == DiagnosticCodes.TooLarge)
+            catch (MacroEvaluationException e) when (e.Descriptor == DiagnosticCodes.TooLarge)
             {
-                // Only the fully expanded form is too large: the split forms were built first and stand.
-                throw new AlgebraException(null, e.Message) { ExceedsLimit = true };
+                // This form alone may be too large: the generator keeps the others.
+                throw new FormTooLargeException(e);
             }
             foreach (var (key, (parameter, blade, sign)) in outputs)
             {
