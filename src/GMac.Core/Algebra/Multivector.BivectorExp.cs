@@ -77,14 +77,14 @@ public sealed partial class Multivector<T>
 
     /// <summary>
     /// S′(x) = (C(x) − S(x))/(2x), 1/6 at 0: x(C − S)/(2x² + g) + (g/6)/(2x² + g) is that quotient
-    /// when x² ≫ g = 1e-40 and 1/6 at x = 0.
+    /// when x² ≫ g = 1e-30 and 1/6 at x = 0.
     /// </summary>
     private static T SincDerivative(T x, bool rotation)
     {
         var (c, s) = CoshSinc(x, rotation);
         var two = T.One + T.One;
-        var denominator = two * x * x + Guard;
-        return (x * (c - s) + Guard / T.CreateChecked(6)) / denominator;
+        var denominator = two * x * x + Blend;
+        return (x * (c - s) + Blend / T.CreateChecked(6)) / denominator;
     }
 
     /// <summary>
@@ -104,8 +104,8 @@ public sealed partial class Multivector<T>
         var shc = Hyperbolic(ag).Sinh / ag;
         var sbc = T.Sin(bg) / bg;
         // sinh(a + ib)/(a + ib); at m = 0 the real part is g/g = 1.
-        var reS = (a * sh * cb + b * ch * sb + Guard) / (m + Guard);
-        var imS = (ch * sbc - cb * shc + Guard / T.CreateChecked(6)) / (two * m + Guard);
+        var reS = (a * sh * cb + b * ch * sb + Blend) / (m + Blend);
+        var imS = (ch * sbc - cb * shc + Blend / T.CreateChecked(6)) / (two * m + Blend);
         return (new PairValue(ch * cb, shc * sbc / two, w), new PairValue(reS, imS, w));
     }
 }

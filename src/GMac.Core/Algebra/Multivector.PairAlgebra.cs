@@ -14,8 +14,15 @@ public sealed partial class Multivector<T>
     // written without splitting B: the eigenvalues s ± r are the squares of the commuting simple parts
     // when both are real.
 
-    /// <summary>1e-40 (a subnormal float): keeps 0/0 out of the generated code; see <see cref="Angle"/>.</summary>
+    /// <summary>1e-40 (a subnormal float) added to radicands: keeps 0/0 out of the generated code; see <see cref="Angle"/>.</summary>
     private static T Guard => RadicandGuard;
+
+    /// <summary>
+    /// 1e-30 added to denominators that vanish at zero, (p + g·limit)/(q + g): the simplifier scales
+    /// such a quotient to a denominator 1 + q/g, so g must keep 1/g within float range. Where q is
+    /// below g the quotient blends towards its limit, which it equals there to rounding.
+    /// </summary>
+    private static readonly T Blend = T.CreateChecked(1e-30);
 
     /// <summary>
     /// f(x + W) = Even + Σ coefficient·direction, the directions W or W/u. Kept apart so that a
@@ -42,7 +49,7 @@ public sealed partial class Multivector<T>
 
     /// <summary>
     /// f_odd·W for ω ≥ 0 from (f(s + r) − f(s − r))/2 and f′(s) without a division by zero:
-    /// (h·r + f′(s)·g)/(ω + g) is f_odd when ω ≫ g = 1e-40 and f′(s) at ω = 0; a symbolic ω that is
+    /// (h·r + f′(s)·g)/(ω + g) is f_odd when ω ≫ g = 1e-30 and f′(s) at ω = 0; a symbolic ω that is
     /// a square u² with W/u free of divisions gives h·(W/u) instead, exactly.
     /// </summary>
     private static (T Coefficient, Multivector<T> Direction) OddPart(Multivector<T> w, T omega, T r, T halfDifference, Func<T> derivative)
@@ -52,7 +59,7 @@ public sealed partial class Multivector<T>
             // r was computed from the same root, so (f(s + r) − f(s − r))/2 pairs with W/u.
             return (halfDifference, unit);
         }
-        return ((halfDifference * r + derivative() * Guard) / (omega + Guard), w);
+        return ((halfDifference * r + derivative() * Blend) / (omega + Blend), w);
     }
 
     /// <summary>

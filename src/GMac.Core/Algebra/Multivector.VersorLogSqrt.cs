@@ -46,13 +46,14 @@ public sealed partial class Multivector<T>
 
     /// <summary>
     /// L(c) = θ/sin θ with θ = atan2(sin θ, c) and sin²θ = <paramref name="n2"/>, and L′(c) = (cL − 1)/sin²θ
-    /// (−1/3 at the identity): both carry 1e-40 so that they are 1 and −1/3 there, not 0/0.
+    /// (−1/3 at the identity): guarded (1e-40 in the root, 1e-30 in the quotient) so that they are 1
+    /// and −1/3 there, not 0/0.
     /// </summary>
     private static (T Value, T Derivative) LogFactor(T c, T n2)
     {
         var n = T.Sqrt(n2 + Guard);
         var value = Atan2(n, c) / n;
-        return (value, (c * value - T.One - Guard / T.CreateChecked(3)) / (n2 + Guard));
+        return (value, (c * value - T.One - Blend / T.CreateChecked(3)) / (n2 + Blend));
     }
 
     /// <summary>
