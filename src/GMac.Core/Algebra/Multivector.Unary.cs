@@ -177,7 +177,8 @@ public sealed partial class Multivector<T>
 
     /// <summary>
     /// exp(B) for a multivector whose square is a scalar β (a 2-blade, or any bivector in 3D):
-    /// cos θ + B sin θ/θ with θ = √(−β) when β &lt; 0, cosh/sinh when β &gt; 0, 1 + B when β = 0.
+    /// cos θ + B sin θ/θ with θ = √(−β) when β &lt; 0, cosh/sinh when β &gt; 0, 1 + B when β = 0;
+    /// for a bivector whose square also has a 4-vector part (4D, 5D), see <see cref="ExpOfBivector"/>.
     /// </summary>
     public Multivector<T> Exp() => Exp(isBlade: false);
 
@@ -197,7 +198,10 @@ public sealed partial class Multivector<T>
         var square = Gp(this);
         var beta = square.ScalarPart;
         if (!isBlade && !square.Grade(0).Equals(square) && square.SelectGrades(g => g != 0).TermCount > 0)
+        {
+            if (SelectGrades(g => g != 2).IsZero) return ExpOfBivector(square);
             throw new AlgebraException(Frame.Name, $"exp is defined here for multivectors whose square is a scalar (2-blades), but {this} squares to {square}.");
+        }
         if (T.IsZero(beta)) return Add(T.One);
         var sign = SignOf(beta) ?? SignFromMetric();
         if (sign is null) return ExpOfUnknownSign(beta);

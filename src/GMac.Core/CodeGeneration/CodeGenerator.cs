@@ -22,13 +22,24 @@ public static class CodeGenerator
         request = request with { Simplify = EffectiveSimplifier(request.Simplify) };
         var candidates = new List<(CodeBlock Block, JoinMode Form)>();
         var forms = new FormMemo();
+        FormTooLargeException? tooLarge = null;
         if (request.Join != JoinMode.Joined)
         {
             foreach (var statementsOnly in new[] { false, true })
             {
                 var recorder = new TemporaryRecorder(request.Simplify, statementsOnly);
                 var form = statementsOnly ? "split by statement" : "split by operation";
-                var program = GenerationProfile.Time($"evaluate {form}", () => request.Evaluate(recorder));
+                SymbolicProgram program;
+                try
+                {
+                    program = GenerationProfile.Time($"evaluate {form}", () => request.Evaluate(recorder));
+                }
+                catch (FormTooLargeException e)
+                {
+                    // One statement holding exp(t·log(M₀~M₁)) is too large unnamed; another form may not be.
+                    tooLarge ??= e;
+                    continue;
+                }
                 // Where every statement is one operation both recorders name the same values: the
                 // second form is then the same program, and building it again would give the same block.
                 var built = forms.BuiltFrom(program, recorder.Temporaries)
@@ -39,7 +50,18 @@ public static class CodeGenerator
         }
         if (request.Join != JoinMode.Split)
         {
-            var evaluated = GenerationProfile.Time("evaluate joined", () => request.Evaluate(null));
+            SymbolicProgram evaluated;
+            try
+            {
+                evaluated = GenerationProfile.Time("evaluate joined", () => request.Evaluate(null));
+            }
+            catch (FormTooLargeException e)
+            {
+                // Fully expanded, the outputs are too large to write (exp of a log of a product):
+                // the split forms, which name intermediate values, stand.
+                tooLarge ??= e;
+                return Ranked(candidates, tooLarge, request);
+            }
             // Optimizing a fully expanded block is the slowest step; skip it when it starts far
             // costlier than a form already found (sharing rarely recovers more than that). Lowering
             // stops as soon as the part lowered so far is past that bound.
@@ -48,6 +70,14 @@ public static class CodeGenerator
             if (joined is not null)
                 candidates.Add((forms.Optimized(joined, "joined"), JoinMode.Joined));
         }
+        return Ranked(candidates, tooLarge, request);
+    }
+
+    private static CodeGenerationResult Ranked(List<(CodeBlock Block, JoinMode Form)> candidates, FormTooLargeException? tooLarge,
+        CodeGenerationRequest request)
+    {
+        if (candidates.Count == 0 && tooLarge is not null)
+            System.Runtime.ExceptionServices.ExceptionDispatchInfo.Capture(tooLarge.InnerException!).Throw();
         // The cheapest form wins unless it is far less accurate; on a tie, the one with fewer temporaries, then the joined (simplest) form.
         var ranked = candidates
             .Select((c, i) => (c.Block, c.Form, Stats: c.Block.Statistics(), Index: i))

@@ -264,7 +264,9 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
             UnaryOperator.Undual => a.Undual(),
             UnaryOperator.RightComplement => a.RightComplement(),
             UnaryOperator.LeftComplement => a.LeftComplement(),
-            UnaryOperator.Exp => a.Exp(IsBladeByStructure(u.Operand, context.Macro, 0)),
+            UnaryOperator.Exp => InDomain(() => a.Exp(IsBladeByStructure(u.Operand, context.Macro, 0)), u),
+            UnaryOperator.Log => InDomain(a.Log, u),
+            UnaryOperator.VersorSqrt => InDomain(a.VersorSqrt, u),
             UnaryOperator.Norm => Scalar(a.Norm()),
             UnaryOperator.Norm2 => Scalar(a.Norm2()),
             // Quasi-norm: ⟨A Ã⟩₀ may be negative in a non-Euclidean metric, so no absolute value.
@@ -272,6 +274,19 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
             UnaryOperator.QuasiNorm => Scalar(T.Sqrt(a.QuasiNorm())),
             _ => throw new MacroEvaluationException(u.Span, $"unknown operator {u.Operator}"),
         });
+    }
+
+    /// <summary>exp, log and sqrt refused for their operand (a 6D bivector, a boost's log) are blamed on the call.</summary>
+    private static Multivector<T> InDomain(Func<Multivector<T>> f, BoundUnaryOperation u)
+    {
+        try
+        {
+            return f();
+        }
+        catch (AlgebraException e) when (!e.ExceedsLimit)
+        {
+            throw new MacroEvaluationException(u.Span, e.Message, DiagnosticCodes.OutsideDomain);
+        }
     }
 
     /// <summary>

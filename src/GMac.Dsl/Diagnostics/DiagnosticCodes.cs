@@ -72,6 +72,7 @@ public static class DiagnosticCodes
     public static readonly DiagnosticDescriptor TooLarge = new("GMAC0314", Error, "an operation of the macro is too large to evaluate symbolically", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor ConstantOutOfRange = new("GMAC0315", Error, "a constant of the generated code is outside the range of its scalar type (float or double, also as the lanes of a vector type)", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor UnboundInput = new("GMAC0317", Error, "an input is bound by no line, or a coefficient is left out of a grade whose others are bound (write \"0\" to mean zero)", ReportedBy.Generation);
+    public static readonly DiagnosticDescriptor OutsideDomain = new("GMAC0320", Error, "exp, log or sqrt of a multivector outside the forms they are defined for (exp: bivectors up to 5D; log and sqrt: rotors and motors whose planes square to ≤ 0)", ReportedBy.Generation);
 
     // ---- binding points, C# files, verification
     public static readonly DiagnosticDescriptor UnmatchedEndRegion = new("GMAC0401", Error, "#endregion without a matching #region", ReportedBy.SourceFiles);

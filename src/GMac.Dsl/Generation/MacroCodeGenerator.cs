@@ -141,7 +141,16 @@ public sealed partial class MacroCodeGenerator
                 NameStatementsOnly = recorder?.StatementsOnly ?? false,
                 OutputText = (o, values) => statements.Add(Verbatim(o, values)),
             };
-            var results = _compiler.Evaluator.Evaluate(macro, inputs, observer);
+            IReadOnlyDictionary<VariableSymbol, Multivector<Scalar>> results;
+            try
+            {
+                results = _compiler.Evaluator.Evaluate(macro, inputs, observer);
+            }
+            catch (MacroEvaluationException e) when (e.Descriptor == DiagnosticCodes.TooLarge)
+            {
+                // This form alone may be too large: the generator keeps the others.
+                throw new FormTooLargeException(e);
+            }
             foreach (var (key, (parameter, blade, sign)) in outputs)
             {
                 var value = results.TryGetValue(parameter, out var mv) ? mv[new BasisBlade(blade)] : Scalar.Zero;

@@ -385,6 +385,20 @@ internal sealed partial class Binder
         return new BoundTransformApplication(transform, operand, new ExpressionType(transform.Destination, grades), span);
     }
 
+    /// <summary>log(M) is a bivector, sqrt(R) has the grades of R and a scalar; both need even grades.</summary>
+    private BoundUnaryOperation? BindVersorFunction(string name, BoundExpression operand, FrameSymbol frame, ExpressionType type, SourceSpan span)
+    {
+        var odd = Enumerable.Range(0, frame.Dimension + 1).Where(g => g % 2 == 1).Aggregate(0, (m, g) => m | (1 << g));
+        if ((type.GradeMask & odd) != 0)
+        {
+            _diagnostics.ReportTypeError(span, $"'{name}' of a multivector takes a rotor or motor (even grades); this operand has odd grades");
+            return null;
+        }
+        return name == "log"
+            ? new BoundUnaryOperation(UnaryOperator.Log, operand, new ExpressionType(frame, 1 << 2), span)
+            : new BoundUnaryOperation(UnaryOperator.VersorSqrt, operand, new ExpressionType(frame, type.GradeMask | 1), span);
+    }
+
     private BoundExpression? BindCall(CallExprContext call, Scope scope, SourceSpan span)
     {
         var name = call.qualifiedName().GetText();
@@ -400,6 +414,9 @@ internal sealed partial class Binder
             }
             var bound = args.Select(a => BindExpression(a, scope)).ToList();
             if (bound.Any(b => b is null)) return null;
+            // log and sqrt of a multivector with more than a scalar part: of a rotor or motor.
+            if (name is "log" or "sqrt" && bound[0]!.Type is { Frame: { } frame, GradeMask: not 1 } type)
+                return BindVersorFunction(name, bound[0]!, frame, type, span);
             return CheckConstant(new BoundScalarFunctionCall(fn.Function, bound!, span), call.GetText);
         }
         if (scope.Macro is null)

@@ -14,6 +14,10 @@ public enum UnaryOperator
     /// <summary>Left complement: lcomplement(A) ∧ A = I on basis blades, the inverse of the right one.</summary>
     LeftComplement,
     Exp,
+    /// <summary>log of a rotor or motor: the bivector B with exp(B) = M, angles in [0, π).</summary>
+    Log,
+    /// <summary>Square root of a rotor or motor: N (N Ñ)^(−1/2) with N = 1 + R.</summary>
+    VersorSqrt,
     Norm,
     Norm2,
     QuasiNorm,

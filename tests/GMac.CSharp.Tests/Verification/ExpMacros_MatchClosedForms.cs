@@ -36,6 +36,21 @@ public sealed class ExpMacros_MatchClosedForms : IDisposable
         define multivector class pga3.Vector as vectors end multivector class
         define multivector class pga3.Point as trivectors end multivector class
 
+        define frame e4 as
+            basis: {e1, e2, e3, e4}
+            Euclidean
+        end frame
+        define subspace e4.bivectors as basis {e1^e2, e1^e3, e1^e4, e2^e3, e2^e4, e3^e4} end subspace
+        define multivector class e4.Bivector as bivectors end multivector class
+
+        // A rotation in two planes: no blade, so the invariant decomposition.
+        define macro ExpBivector4D as
+            inputs: { b : e4.Bivector }
+            outputs: { r : e4.Multivector }
+            performs:
+                r = exp(b);
+        end macro
+
         define macro ExpBivector3D as
             inputs: { b : e3d.Bivector }
             outputs: { r : e3d.Rotor }
@@ -204,6 +219,46 @@ public sealed class ExpMacros_MatchClosedForms : IDisposable
             var (dx, dy) = (x[0] - c[0], x[1] - c[1]);
             double[] expected = [c[0] + Math.Cos(theta) * dx - Math.Sin(theta) * dy, c[1] + Math.Sin(theta) * dx + Math.Cos(theta) * dy, x[2]];
             for (var i = 0; i < 3; i++) Near(expected[i], moved[i], 1e-13, $"coordinate {i} at θ = {theta}");
+        }
+    }
+
+    [Theory]
+    [InlineData(0.0, 1.0)]
+    [InlineData(1e-200, 0.5)]
+    [InlineData(1e-8, 1.0)]
+    [InlineData(1e-8, 0.3)]
+    [InlineData(0.9, 1.0)]
+    [InlineData(0.9, 0.4)]
+    [InlineData(0.9, 1e-9)]
+    [InlineData(50.0, 0.7)]
+    public void The_generated_exp_of_a_4d_bivector_is_the_product_of_its_plane_rotations(double angle, double ratio)
+    {
+        var kernel = MacroKernel.Create("ExpBivector4D", "double", _context);
+        // B = θ₁ e1∧u + θ₂ v∧e4 with u = (e2 + e3)/√2, v = (e3 − e2)/√2 orthonormal: two orthogonal
+        // planes, θ₁(e12 + e13)/√2 + θ₂(e34 − e24)/√2 in coordinates, and no blade.
+        var (t1, t2) = (angle, angle * ratio);
+        var h = Math.Sqrt(0.5);
+        var r = kernel.Run(new Dictionary<string, double>
+        {
+            ["b_e1_e2"] = t1 * h, ["b_e1_e3"] = t1 * h, ["b_e3_e4"] = t2 * h, ["b_e2_e4"] = -t2 * h,
+        });
+        var (c1, s1, c2, s2) = (Math.Cos(t1), Math.Sin(t1), Math.Cos(t2), Math.Sin(t2));
+        // (c1 + s1 e1∧u)(c2 + s2 v∧e4) = c1c2 + s1c2 e1∧u + c1s2 v∧e4 + s1s2 e1∧u∧v∧e4, and
+        // e1∧u∧v∧e4 = e1∧e2∧e3∧e4 (u∧v = e2∧e3), v∧e4 = (e3∧e4 − e2∧e4)/√2.
+        var expected = new Dictionary<string, double>
+        {
+            ["r_s"] = c1 * c2, ["r_e1_e2"] = s1 * c2 * h, ["r_e1_e3"] = s1 * c2 * h,
+            ["r_e3_e4"] = c1 * s2 * h, ["r_e2_e4"] = -c1 * s2 * h, ["r_e1_e2_e3_e4"] = s1 * s2,
+        };
+        var tolerance = Math.Max(4e-16, 1e-16 * angle * angle);
+        foreach (var (name, value) in r)
+        {
+            Assert.True(double.IsFinite(value), $"{name} is {value}");
+            var e = expected.GetValueOrDefault(name);
+            Assert.True(Math.Abs(e - value) <= tolerance * Math.Max(1, Math.Abs(angle)), $"{name}: {value} instead of {e}");
+            // Near 0 the bivector part is B itself, relatively.
+            if (angle is > 0 and < 1e-7 && e != 0 && name.Length == 7)
+                Assert.True(Math.Abs(e - value) <= 1e-15 * Math.Abs(e), $"{name}: {value} instead of {e}");
         }
     }
 }

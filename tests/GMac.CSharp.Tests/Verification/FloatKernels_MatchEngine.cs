@@ -20,6 +20,10 @@ public sealed partial class FloatKernels_MatchEngine
     [InlineData("ApplyUnitRotor3D")]
     [InlineData("ApplyVersorToPoint")]
     [InlineData("SphereCentreAndRadius")]
+    [InlineData("PgaMotorExp")]
+    [InlineData("PgaMotorLog")]
+    [InlineData("CgaMotorLog")]
+    [InlineData("PgaMotorSqrt")]
     public void Float_code_of_a_library_macro_matches_the_double_engine_to_float_accuracy(string macro)
     {
         var kernel = MacroKernel.Create(macro, "float");

@@ -12,7 +12,7 @@ namespace GMac.Core.Tests.Algebra;
 public class Exp_NearZeroAndSigns
 {
     /// <summary>Σ Bᵏ/k! in rationals (symbolic constants), to convergence.</summary>
-    private static Multivector<double> RationalSeries(Multivector<Scalar> b)
+    internal static Multivector<double> RationalSeries(Multivector<Scalar> b)
     {
         var sum = Multivector<Scalar>.FromScalar(b.Frame, Scalar.One);
         var term = sum;

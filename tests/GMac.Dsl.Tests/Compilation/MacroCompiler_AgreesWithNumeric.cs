@@ -29,7 +29,7 @@ public sealed class MacroCompiler_AgreesWithNumeric
         var frames = new CoreFrames();
         var compiler = new MacroCompiler(frames);
         var symbolicInputs = SymbolicMacro.Inputs(frames, macro);
-        var symbolic = compiler.Evaluator.Evaluate(macro, symbolicInputs);
+        var (symbolic, temporaries) = Compile(compiler, macro, symbolicInputs);
         var usesDiff = macro.Statements.OfType<BoundAssignment>().Any(a => ContainsDiff(a.Value))
             || macro.Callees.Any(c => c.Statements.OfType<BoundAssignment>().Any(a => ContainsDiff(a.Value)));
 
@@ -40,6 +40,7 @@ public sealed class MacroCompiler_AgreesWithNumeric
             var values = symbolicInputs.Values.SelectMany(m => m.Terms.SelectMany(t => t.Coefficient.Variables))
                 .Distinct().ToDictionary(v => v, _ => 0.3 + 1.4 * random.NextDouble());
             var numericInputs = symbolicInputs.ToDictionary(kv => kv.Key, kv => kv.Value.Evaluate(values));
+            foreach (var (name, value) in temporaries) values[name] = value.Evaluate(values);
             var numeric = new MacroEvaluator<double>(frames, DoubleDomain.Instance).Evaluate(macro, numericInputs);
 
             Assert.Equal(numeric.Keys.Select(k => k.Name).Order(), symbolic.Keys.Select(k => k.Name).Order());
@@ -56,6 +57,32 @@ public sealed class MacroCompiler_AgreesWithNumeric
                         $"{macroName}.{output.Name} on {expected.Frame.BladeName(blade)}: numeric {e}, symbolic {a}");
                 }
             }
+        }
+    }
+
+    /// <summary>
+    /// The macro's outputs as expressions of its inputs; where that is too large to expand (the exp
+    /// of a log of a product), as expressions of named intermediate values, as generated code has
+    /// them, with those values in order of definition.
+    /// </summary>
+    private static (IReadOnlyDictionary<VariableSymbol, Multivector<Scalar>>, List<(string, Scalar)>) Compile(
+        MacroCompiler compiler, MacroSymbol macro, IReadOnlyDictionary<VariableSymbol, Multivector<Scalar>> inputs)
+    {
+        var temporaries = new List<(string, Scalar)>();
+        try
+        {
+            return (compiler.Evaluator.Evaluate(macro, inputs), temporaries);
+        }
+        catch (MacroEvaluationException e) when (e.Descriptor == Dsl.Diagnostics.DiagnosticCodes.TooLarge)
+        {
+            Multivector<Scalar> Name(Multivector<Scalar> m) => Multivector<Scalar>.FromTerms(m.Frame, m.Terms.Select(t =>
+            {
+                if (t.Coefficient.IsConstant) return (t.Blade, t.Coefficient);
+                var name = $"tmp{temporaries.Count}";
+                temporaries.Add((name, t.Coefficient));
+                return (t.Blade, Scalar.Variable(name));
+            }));
+            return (compiler.Evaluator.Evaluate(macro, inputs, new EvaluationObserver<Scalar> { Name = Name }), temporaries);
         }
     }
 

@@ -34,6 +34,8 @@ public sealed class Binder_Types
     [InlineData("dual(u)", new[] { 2 })]
     [InlineData("norm(b)", new[] { 0 })]
     [InlineData("exp(b)", new[] { 0, 2 })]
+    [InlineData("log(exp(b))", new[] { 2 })]
+    [InlineData("sqrt(exp(b))", new[] { 0, 2 })]
     [InlineData("grade(u gp b, 3)", new[] { 3 })]
     [InlineData("cast_to_grades(u gp b + s, 0, 3)", new[] { 0, 3 })]
     [InlineData("cast_to_grades(u gp b, v)", new[] { 1 })]
