@@ -76,6 +76,22 @@ public static class AccuracyFamilies
                 }),
                 From<Vec3Pair>(subject, "offset", "points moved by 1e5 along each axis", (x, _) => new Vec3Pair { U = Add(x.U, Offset), V = Add(x.V, Offset) }),
             ],
+            "LineThroughPoints" =>
+            [
+                From<Vec3Pair>(subject, "close-far", "points near 1e5, 1e-3 apart", (x, r) =>
+                {
+                    var a = Add(x.U, Offset);
+                    return new Vec3Pair { U = a, V = Add(a, Scale(RandomVec(r), 1e-3)) };
+                }),
+            ],
+            "CircleThroughPoints" =>
+            [
+                From<Vec3Triple>(subject, "close-far", "points near 1e5, 1e-3 apart", (x, r) =>
+                {
+                    var a = Add(x.A, Offset);
+                    return new Vec3Triple { A = a, B = Add(a, Scale(RandomVec(r), 1e-3)), C = Add(a, Scale(RandomVec(r), 1e-3)) };
+                }),
+            ],
             _ => [],
         });
         return families;

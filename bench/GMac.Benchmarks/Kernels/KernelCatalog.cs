@@ -21,6 +21,8 @@ public static class KernelCatalog
         () => new SquaredDistanceKernel(),
         () => new RotateAboutAxisThroughPoint3DKernel(),
         () => new SphereCentreAndRadiusThroughPointsKernel(),
+        () => new LineThroughPointsKernel(),
+        () => new CircleThroughPointsKernel(),
     ];
 
     public static IReadOnlyList<string> Names { get; } = Factories.Select(f => f().MacroName).ToArray();

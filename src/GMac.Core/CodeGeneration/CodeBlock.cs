@@ -31,7 +31,10 @@ public sealed class CodeBlock
     /// <summary>The placeholder for the value of <see cref="EvaluatedOnce"/>[<paramref name="index"/>] in input texts; no C# text contains it.</summary>
     public static string EvaluatedOnceMarker(int index) => $"\u0001{index}\u0001";
 
-    public CodeBlock WithStatements(IEnumerable<CodeStatement> statements) => new(statements, InputText, OutputTargets) { EvaluatedOnce = EvaluatedOnce };
+    /// <summary>The inputs that are coordinates of points or vectors, for rewrites over their differences.</summary>
+    public IReadOnlyList<InputPoint> Points { get; init; } = [];
+
+    public CodeBlock WithStatements(IEnumerable<CodeStatement> statements) => new(statements, InputText, OutputTargets) { EvaluatedOnce = EvaluatedOnce, Points = Points };
 
     private int? _structureHash;
 

@@ -24,6 +24,9 @@ public sealed record CodeGenerationRequest(
 
     public JoinMode Join { get; init; } = JoinMode.Automatic;
 
+    /// <summary>The inputs that are coordinates of points or vectors; see <see cref="CodeBlock.Points"/>.</summary>
+    public IReadOnlyList<InputPoint> Points { get; init; } = [];
+
     /// <summary>Expressions evaluated once before the code; see <see cref="CodeBlock.EvaluatedOnce"/>.</summary>
     public IReadOnlyList<string> EvaluatedOnce { get; init; } = [];
 }

@@ -1,4 +1,5 @@
 using GMac.Core.CodeGeneration.Accuracy;
+using GMac.Core.CodeGeneration.Cost;
 using GMac.Core.Symbolic;
 
 namespace GMac.Core.CodeGeneration;
@@ -9,7 +10,7 @@ public static class CodeGenerator
     private const int HopelessFactor = 3;
 
     /// <summary>
-    /// Evaluates the macro once per candidate form and keeps the cheapest: up to three calls of
+    /// Evaluates the macro once per candidate form and keeps the fastest accurate one (<see cref="FormRanking"/>): up to three calls of
     /// <see cref="CodeGenerationRequest.Evaluate"/> (split with every intermediate named, split with
     /// whole statements named, joined), fewer when <see cref="CodeGenerationRequest.Join"/> fixes
     /// the form. One evaluation cannot serve all three: a recorder names intermediate values while
@@ -21,6 +22,7 @@ public static class CodeGenerator
     {
         request = request with { Simplify = EffectiveSimplifier(request.Simplify) };
         var candidates = new List<(CodeBlock Block, JoinMode Form)>();
+        var builtBlocks = new List<CodeBlock>();
         var forms = new FormMemo();
         FormTooLargeException? tooLarge = null;
         if (request.Join != JoinMode.Joined)
@@ -46,6 +48,7 @@ public static class CodeGenerator
                     ?? GenerationProfile.Time($"build {form}", () => Build(program, recorder.Temporaries, request));
                 forms.Remember(program, recorder.Temporaries, built);
                 candidates.Add((forms.Optimized(built, form), JoinMode.Split));
+                builtBlocks.Add(built);
             }
         }
         if (request.Join != JoinMode.Split)
@@ -60,7 +63,7 @@ public static class CodeGenerator
                 // Fully expanded, the outputs are too large to write (exp of a log of a product):
                 // the split forms, which name intermediate values, stand.
                 tooLarge ??= e;
-                return Ranked(candidates, tooLarge, request);
+                return Ranked(candidates, builtBlocks, tooLarge, request);
             }
             // Optimizing a fully expanded block is the slowest step; skip it when it starts far
             // costlier than a form already found (sharing rarely recovers more than that). Lowering
@@ -68,26 +71,57 @@ public static class CodeGenerator
             var bestSoFar = candidates.Count == 0 ? long.MaxValue : HopelessFactor * (long)candidates.Min(c => c.Block.Statistics().Cost);
             var joined = GenerationProfile.Time("build joined", () => Build(evaluated, [], request, bestSoFar));
             if (joined is not null)
+            {
                 candidates.Add((forms.Optimized(joined, "joined"), JoinMode.Joined));
+                builtBlocks.Add(joined);
+            }
         }
-        return Ranked(candidates, tooLarge, request);
+        return Ranked(candidates, builtBlocks, tooLarge, request);
     }
 
-    private static CodeGenerationResult Ranked(List<(CodeBlock Block, JoinMode Form)> candidates, FormTooLargeException? tooLarge,
-        CodeGenerationRequest request)
+    private static CodeGenerationResult Ranked(List<(CodeBlock Block, JoinMode Form)> candidates, List<CodeBlock> builtBlocks,
+        FormTooLargeException? tooLarge, CodeGenerationRequest request)
     {
         if (candidates.Count == 0 && tooLarge is not null)
             System.Runtime.ExceptionServices.ExceptionDispatchInfo.Capture(tooLarge.InnerException!).Throw();
-        // The cheapest form wins unless it is far less accurate; on a tie, the one with fewer temporaries, then the joined (simplest) form.
-        var ranked = candidates
+        GenerationProfile.Time("difference forms", () => { AddDifferenceForms(candidates, builtBlocks, request.Relations); return 0; });
+        // The fastest accurate form wins (see FormRanking); equal estimates go to fewer operations,
+        // fewer temporaries, then the joined (simplest) form.
+        var ordered = candidates
             .Select((c, i) => (c.Block, c.Form, Stats: c.Block.Statistics(), Index: i))
-            .OrderBy(c => c.Stats.Cost).ThenBy(c => c.Stats.Temporaries).ThenBy(c => c.Form == JoinMode.Joined ? 0 : 1).ThenBy(c => c.Index)
+            .OrderBy(c => c.Form == JoinMode.Joined ? 0 : 1).ThenBy(c => c.Index)
             .ToList();
-        // accuracy overrules cost only where the cheaper form loses far more than the others
-        var best = ranked[GenerationProfile.Time("accuracy probe", () => AccuracyProbe.MostAccurateAffordable(ranked.Select(c => c.Block).ToList(), request.Relations))];
-        var alternative = ranked.Skip(1).FirstOrDefault(c => c.Form != best.Form);
+        var ranking = GenerationProfile.Time("form ranking", () => FormRanking.Rank(ordered.Select(c => c.Block).ToList(), request.Relations));
+        var best = ordered[ranking[0]];
+        var alternative = ranking.Skip(1).Select(i => ordered[i]).FirstOrDefault(c => c.Form != best.Form);
         // signs are placed on the kept form alone: that changes no count, so no choice above
         return new CodeGenerationResult(Optimizer.Finish(best.Block), best.Stats, best.Form, alternative.Block is null ? null : alternative.Stats);
+    }
+
+    /// <summary>
+    /// For each form that loses accuracy on the probe and reads points, the same form with every
+    /// value that moves with the points written over their differences to one of them. It joins the
+    /// candidates where it costs no more operations than the form it comes from (the moment of a
+    /// line whose direction q − p is computed anyway), or where another form is accurate: then it
+    /// may be a faster way to that accuracy (v1 × (v2 − v1) ahead of a division in Gram–Schmidt),
+    /// and the ranking decides; or where the points are positions (<see cref="InputPoint.IsPosition"/>),
+    /// whose values are written relative to one of them at whatever it costs (½(|q|² − |p|²) of a
+    /// circle through points as ½(q − p)·(q + p)). For directions it is not kept only to be more
+    /// accurate than every form the macro's own statements give (u × (v − u) for the normal to u and v).
+    /// </summary>
+    private static void AddDifferenceForms(List<(CodeBlock Block, JoinMode Form)> candidates, List<CodeBlock> built, SideRelations relations)
+    {
+        if (candidates.Count == 0 || candidates[0].Block.Points.Count < 2) return;
+        var errors = candidates.Select(c => AccuracyProbe.Error(c.Block, relations)).ToList();
+        var anotherIsAccurate = errors.Exists(e => e <= AccuracyProbe.Threshold);
+        var positions = candidates[0].Block.Points.Any(p => p.IsPosition);
+        for (var i = built.Count - 1; i >= 0; i--)
+        {
+            if (errors[i] is not { } e || e <= AccuracyProbe.Threshold) continue;
+            var variant = Optimizer.Reduce(built[i], differencesEverywhere: true);
+            if (candidates.Exists(c => c.Block.HasSameStatements(variant))) continue;
+            if (anotherIsAccurate || positions || variant.Statistics().Cost <= candidates[i].Block.Statistics().Cost) candidates.Add((variant, candidates[i].Form));
+        }
     }
 
     /// <summary>
@@ -190,7 +224,7 @@ public static class CodeGenerator
             statements.Add(new AssignmentStatement(a.Name, GenerationProfile.Time("lowering", () => Lower(a.Value, a.IsOutput ? $"output {a.Name}" : $"temporary {a.Name}")), a.IsOutput));
             known.Add(a.Name);
         }
-        var block = new CodeBlock(statements, request.InputText, request.OutputTargets) { EvaluatedOnce = request.EvaluatedOnce };
+        var block = new CodeBlock(statements, request.InputText, request.OutputTargets) { EvaluatedOnce = request.EvaluatedOnce, Points = request.Points };
         return sharedCostLimit < long.MaxValue && Rewrites.SharedCost.Of(block) > sharedCostLimit ? null : block;
     }
 }

@@ -17,6 +17,14 @@ public sealed record CodeStatistics(int Additions, int Multiplications, int Divi
         return new CodeStatistics(adds, muls, divs, calls, negs, block.Temporaries.Count());
     }
 
+    /// <summary>The <see cref="Cost"/> of one expression on its own.</summary>
+    internal static int CostOf(Expr e)
+    {
+        int adds = 0, muls = 0, divs = 0, calls = 0, negs = 0;
+        Count(e, insideSum: false, ref adds, ref muls, ref divs, ref calls, ref negs);
+        return adds + muls + 4 * divs + 8 * calls;
+    }
+
     private static void Count(Expr e, bool insideSum, ref int adds, ref int muls, ref int divs, ref int calls, ref int negs)
     {
         switch (e)

@@ -11,7 +11,10 @@ public sealed class Optimizer
     /// The passes that can change what a block costs: what candidate forms are compared by. The
     /// generator runs them once per form and <see cref="Finish"/> once, on the form it keeps.
     /// </summary>
-    public static CodeBlock Reduce(CodeBlock block)
+    public static CodeBlock Reduce(CodeBlock block) => Reduce(block, differencesEverywhere: false);
+
+    /// <param name="differencesEverywhere">Write values that move with the points over their differences wherever that costs no more than the subtractions (see <see cref="TranslationInvariancePass"/>).</param>
+    public static CodeBlock Reduce(CodeBlock block, bool differencesEverywhere)
     {
         var fold = new ConstantFoldingPass();
         var copy = new CopyPropagationPass();
@@ -24,7 +27,7 @@ public sealed class Optimizer
         var known = new PassFixedPoints();
         CodeBlock Run(IOptimizerPass pass, CodeBlock input) => Once(known, pass, input);
 
-        block = Run(new TranslationInvariancePass(), block); // before any pass shapes sums for sharing
+        block = Run(new TranslationInvariancePass(differencesEverywhere), block); // before any pass shapes sums for sharing
         block = Run(dead, Run(copy, Run(fold, block)));
         block = Run(dead, Run(new AlgebraicValueNumberingPass(), block));
         block = Run(new SharedRemainderPass(), block);

@@ -165,11 +165,39 @@ public sealed partial class MacroCodeGenerator
             Relations = relations,
             Join = join,
             EvaluatedOnce = atoms.EvaluatedOnce,
+            Points = InputPoints(macro, inputValues),
         };
         return new BindingPointPlan(macro, request, atoms.DisplayTexts(), values => NumericReference(macro, inputValues, outputs, values))
         {
             DefaultOutputs = defaultOutputs,
         };
+    }
+
+    /// <summary>
+    /// The inputs with vector coefficients bound to input variables as they are: points (or vectors)
+    /// whose coordinates can be subtracted from those of another input bound on the same blades.
+    /// </summary>
+    private List<InputPoint> InputPoints(MacroSymbol macro, Dictionary<(VariableSymbol, int), Scalar> inputValues)
+    {
+        var points = new List<InputPoint>();
+        foreach (var input in macro.Inputs)
+        {
+            // blades bound to something else (a constant, ½|p|² of a conformal point) follow the variables
+            var coordinates = new List<(int Blade, string Name)>();
+            foreach (var id in input.Class!.VariableBlades.Where(id => System.Numerics.BitOperations.PopCount((uint)id) == 1).Order())
+            {
+                if (!inputValues.TryGetValue((input, id), out var value) || value.Variables.Count != 1) continue;
+                var name = value.Variables.First();
+                if (ReferenceEquals(value, Scalar.Variable(name)) && coordinates.TrueForAll(c => c.Name != name)) coordinates.Add((id, name));
+            }
+            // a constant vector coefficient (no = 1 of a normalized point, from the class or the binding) makes it a position
+            var position = input.Class.ConstantCoefficients.Any(c => System.Numerics.BitOperations.PopCount((uint)c.Blade) == 1)
+                || input.Class.VariableBlades.Any(id => System.Numerics.BitOperations.PopCount((uint)id) == 1
+                    && inputValues.TryGetValue((input, id), out var v) && v.IsConstant && !Scalar.IsZero(v));
+            if (coordinates.Count >= 2)
+                points.Add(new InputPoint($"{input.Class.Frame}:{string.Join(",", coordinates.Select(c => c.Blade))}", [.. coordinates.Select(c => c.Name)], position));
+        }
+        return points;
     }
 
     /// <summary>

@@ -11,8 +11,15 @@ namespace GMac.Core.CodeGeneration.Passes;
 /// difference form is also usually shorter, since the lowering then factors products of
 /// differences instead of re-expanding them. A rewrite is kept unless it costs more than the
 /// subtractions it introduces.
+/// A polynomial that moves with the points instead (the moment p × q of the line through p and
+/// q, ½(|q|² − |p|²) in a circle through points) is written over the differences of the points
+/// (<see cref="CodeBlock.Points"/>) to one of them where what is left of the anchor alone is at
+/// most linear: p × q = p × (q − p). Only when <paramref name="differencesEverywhere"/>, where the
+/// polynomial over the differences costs no more than the expanded one (the subtractions, often
+/// shared, are not counted): the generator builds such a form as a further candidate where the
+/// others lose accuracy, and keeps it where the whole block's ranking says so.
 /// </summary>
-public sealed class TranslationInvariancePass : IOptimizerPass
+public sealed class TranslationInvariancePass(bool differencesEverywhere = false) : IOptimizerPass
 {
     /// <summary>Trees larger than this are not lifted: the symbolic work grows with their size.</summary>
     public const int MaxNodes = 600;
@@ -32,8 +39,56 @@ public sealed class TranslationInvariancePass : IOptimizerPass
         // statements: lifts (by node) and group searches (by polynomial) are made once per block.
         var lifts = new Dictionary<Expr, Scalar?>(ReferenceEqualityComparer.Instance);
         var groups = new Dictionary<Scalar, List<List<string>>>();
+        var points = differencesEverywhere ? block.Points : [];
         return BlockRewriting.MapExpressions(block, e => BlockRewriting.ReplaceNodes(e, node =>
-            node is SumExpr && node.Size <= MaxNodes ? Rewrite(node, inputOrder, lifts, groups) : null));
+            node is SumExpr && node.Size <= MaxNodes
+                ? Rewrite(node, inputOrder, lifts, groups) ?? Covariant(node, points, lifts)
+                : null));
+    }
+
+    /// <summary>
+    /// The sum written over differences of the points it reads to one anchor point, or null. Each
+    /// layout of points is tried with every point it reads as the anchor; the cheapest form whose
+    /// anchor-only part (the value with every point at the anchor) is at most linear is kept.
+    /// </summary>
+    internal static Expr? Covariant(Expr sum, IReadOnlyList<InputPoint> points, Dictionary<Expr, Scalar?>? lifts = null)
+    {
+        if (points.Count < 2 || !PolynomialLifting.TryLift(sum, lifts, out var polynomial) || !HasDegreeTwo(polynomial)) return null;
+        var variables = polynomial.Variables;
+        if (variables.Count > MaxVariables || variables.Any(v => v.StartsWith(DifferencePrefix, StringComparison.Ordinal))) return null;
+        var original = Cost(sum);
+        Expr? best = null;
+        var bestCost = int.MaxValue;
+        foreach (var layout in points.GroupBy(p => p.Layout))
+        {
+            var read = layout.Where(p => p.Coordinates.Any(variables.Contains)).ToList();
+            if (read.Count < 2) continue;
+            foreach (var anchor in read)
+            {
+                var substitution = new Dictionary<string, Scalar>(StringComparer.Ordinal);
+                var collapse = new Dictionary<string, Scalar>(StringComparer.Ordinal);
+                var differences = new Dictionary<string, (string Of, string From)>(StringComparer.Ordinal);
+                foreach (var other in read.Where(p => !ReferenceEquals(p, anchor)))
+                for (var i = 0; i < other.Coordinates.Count; i++)
+                {
+                    var (v, a) = (other.Coordinates[i], anchor.Coordinates[i]);
+                    var name = $"{DifferencePrefix}{differences.Count}";
+                    differences[name] = (v, a);
+                    substitution[v] = Scalar.Variable(a) + Scalar.Variable(name);
+                    collapse[v] = Scalar.Variable(a);
+                }
+                if (HasDegreeTwo(polynomial.Substitute(collapse))) continue; // products of the anchor alone would cancel
+                var shifted = polynomial.Substitute(substitution);
+                var lowered = ScalarLowering.Lower(shifted);
+                var used = differences.Where(d => shifted.Variables.Contains(d.Key)).ToList();
+                var cost = Cost(lowered);
+                if (cost > original || cost >= bestCost) continue;
+                bestCost = cost;
+                best = BlockRewriting.Substitute(lowered, used.ToDictionary(d => d.Key,
+                    d => ExprFactory.Difference(ExprFactory.Variable(d.Value.Of), ExprFactory.Variable(d.Value.From)), StringComparer.Ordinal));
+            }
+        }
+        return best;
     }
 
     /// <summary>The difference form of one sum, or null to keep it (and look inside it).</summary>

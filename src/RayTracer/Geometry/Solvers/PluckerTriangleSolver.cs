@@ -121,10 +121,10 @@ public static class PluckerTriangleSolver
         //GMac.Bind("pr.e1", "0");
         //GMac.Bind("pr.e2", "0");
         //GMac.Bind("pr.e3", "0");
-        double t0 = a.x - b.x;
-        double t1 = a.y - b.y;
-        double t2 = a.z - b.z;
-        tn = (a.x - c.x) * (t1 * a.z - t2 * a.y) - (c.y - a.y) * (t2 * a.x - t0 * a.z) - (c.z - a.z) * (t0 * a.y - t1 * a.x);
+        double t0 = a.y - c.y;
+        double t1 = c.x - a.x;
+        double t2 = a.z - c.z;
+        tn = (b.x - a.x) * (t0 * a.z - t2 * a.y) + (b.y - a.y) * (t1 * a.z + t2 * a.x) - (b.z - a.z) * (t1 * a.y + t0 * a.x);
         #endregion
 
         return Finish(d1, d2, d3, tn, ray.tMin, tMax, out beta, out gamma);

@@ -1,0 +1,139 @@
+using System.Runtime.CompilerServices;
+using GMac.Benchmarks.Kernels.Values;
+using static GMac.Benchmarks.Kernels.DirectAlgebra;
+
+namespace GMac.Benchmarks.Kernels;
+
+/// <summary>(3.82) the circle through three points, p ∧ q ∧ r of normalized conformal points.</summary>
+public sealed class CircleThroughPointsKernel : GaKernel<Vec3Triple, ConformalCircle>
+{
+    public override string MacroName => "CircleThroughPoints";
+    public override string Source => "thesis (3.82)";
+
+    /// <summary>
+    /// Counted by hand: a = q − p, b = r − p (6 add); α = ½ a·(p + q), β = ½ b·(p + r) (10 add, 8 mul);
+    /// ½|p|² (2 add, 4 mul); a ∧ b (3 add, 6 mul); c = β a − α b (3 add, 6 mul); p·(a × b) (2 add, 3 mul);
+    /// p ∧ c + ½|p|² a ∧ b (6 add, 9 mul).
+    /// </summary>
+    public override OperationCount HandOperations => new(Additions: 32, Multiplications: 36, Divisions: 0, Calls: 0);
+
+    protected override Vec3Triple CreateInput(Random random) => new()
+    {
+        A = new(Signed(random), Signed(random), Signed(random)),
+        B = new(Signed(random), Signed(random), Signed(random)),
+        C = new(Signed(random), Signed(random), Signed(random)),
+    };
+
+    protected override double[] Components(ConformalCircle c) =>
+        [c.NoE12, c.NoE13, c.NoE23, c.E123, c.NoE1Ni, c.NoE2Ni, c.NoE3Ni, c.E12Ni, c.E13Ni, c.E23Ni];
+
+    protected override void RunGenerated(Vec3Triple[] inputs, ConformalCircle[] outputs)
+    {
+        for (var i = 0; i < inputs.Length; i++) Generated(in inputs[i], out outputs[i]);
+    }
+
+    protected override void RunDirect(Vec3Triple[] inputs, ConformalCircle[] outputs)
+    {
+        for (var i = 0; i < inputs.Length; i++) outputs[i] = Direct(in inputs[i]);
+    }
+
+    protected override void RunHand(Vec3Triple[] inputs, ConformalCircle[] outputs)
+    {
+        for (var i = 0; i < inputs.Length; i++) Hand(in inputs[i], out outputs[i]);
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static void Generated(in Vec3Triple x, out ConformalCircle c)
+    {
+        #region GMac : CircleThroughPoints
+        //GMac.Bind("p1", "ConformalPoint3D", "x.A");
+        //GMac.Bind("p2", "ConformalPoint3D", "x.B");
+        //GMac.Bind("p3", "ConformalPoint3D", "x.C");
+        //GMac.Bind("phi.no^e1^e2", "<c.NoE12>");
+        //GMac.Bind("phi.no^e1^e3", "<c.NoE13>");
+        //GMac.Bind("phi.no^e2^e3", "<c.NoE23>");
+        //GMac.Bind("phi.e1^e2^e3", "<c.E123>");
+        //GMac.Bind("phi.no^e1^ni", "<c.NoE1Ni>");
+        //GMac.Bind("phi.no^e2^ni", "<c.NoE2Ni>");
+        //GMac.Bind("phi.no^e3^ni", "<c.NoE3Ni>");
+        //GMac.Bind("phi.e1^e2^ni", "<c.E12Ni>");
+        //GMac.Bind("phi.e1^e3^ni", "<c.E13Ni>");
+        //GMac.Bind("phi.e2^e3^ni", "<c.E23Ni>");
+        double tmp0 = x.C.x - x.A.x;
+        double tmp1 = x.C.y - x.A.y;
+        double tmp2 = x.C.z - x.A.z;
+        double tmp3 = 2.0 * x.A.z;
+        double tmp4 = 2.0 * x.A.y;
+        double tmp5 = 2.0 * x.A.x;
+        double tmp6 = 0.5 * (tmp0 * (tmp5 + tmp0) + tmp1 * (tmp4 + tmp1) + tmp2 * (tmp3 + tmp2));
+        double tmp7 = x.B.x - x.A.x;
+        double tmp8 = x.B.y - x.A.y;
+        double tmp9 = x.B.z - x.A.z;
+        double tmp10 = 0.5 * (tmp7 * (tmp5 + tmp7) + tmp8 * (tmp4 + tmp8) + tmp9 * (tmp3 + tmp9));
+        double tmp11 = tmp1 * tmp7 - tmp0 * tmp8;
+        double tmp12 = tmp2 * tmp7 - tmp0 * tmp9;
+        double tmp13 = tmp2 * tmp8 - tmp1 * tmp9;
+        double tmp14 = tmp6 * tmp7 - tmp0 * tmp10;
+        double tmp15 = tmp6 * tmp8 - tmp1 * tmp10;
+        double tmp16 = tmp6 * tmp9 - tmp2 * tmp10;
+        double tmp18 = tmp11;
+        double tmp19 = tmp12;
+        double tmp20 = tmp13;
+        double tmp21 = tmp13 * x.A.x + tmp11 * x.A.z - tmp12 * x.A.y;
+        double tmp22 = tmp14;
+        double tmp23 = tmp15;
+        double tmp24 = tmp16;
+        double tmp17 = 0.5 * (x.A.z * x.A.z + x.A.y * x.A.y + x.A.x * x.A.x);
+        double tmp25 = tmp11 * tmp17 + tmp15 * x.A.x - tmp14 * x.A.y;
+        double tmp26 = tmp12 * tmp17 + tmp16 * x.A.x - tmp14 * x.A.z;
+        c.E23Ni = tmp13 * tmp17 + tmp16 * x.A.y - tmp15 * x.A.z;
+        c.NoE12 = tmp18;
+        c.NoE13 = tmp19;
+        c.NoE23 = tmp20;
+        c.E123 = tmp21;
+        c.NoE1Ni = tmp22;
+        c.NoE2Ni = tmp23;
+        c.NoE3Ni = tmp24;
+        c.E12Ni = tmp25;
+        c.E13Ni = tmp26;
+        #endregion
+    }
+
+    public static ConformalCircle Direct(in Vec3Triple x)
+    {
+        var phi = Point(x.A).Op(Point(x.B)).Op(Point(x.C));
+        return new ConformalCircle
+        {
+            NoE12 = phi["no^e1^e2"], NoE13 = phi["no^e1^e3"], NoE23 = phi["no^e2^e3"], E123 = phi["e1^e2^e3"],
+            NoE1Ni = phi["no^e1^ni"], NoE2Ni = phi["no^e2^ni"], NoE3Ni = phi["no^e3^ni"],
+            E12Ni = phi["e1^e2^ni"], E13Ni = phi["e1^e3^ni"], E23Ni = phi["e2^e3^ni"],
+        };
+    }
+
+    /// <summary>
+    /// p ∧ (q − p + α ni) ∧ (r − p + β ni) with a = q − p, b = r − p, α = ½(|q|² − |p|²) = ½ a·(p + q)
+    /// and β likewise: no ∧ (a ∧ b) + no ∧ c ∧ ni + p ∧ a ∧ b + (p ∧ c + ½|p|² a ∧ b) ∧ ni, c = β a − α b.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static void Hand(in Vec3Triple x, out ConformalCircle c)
+    {
+        ref readonly var p = ref x.A;
+        double ax = x.B.x - p.x, ay = x.B.y - p.y, az = x.B.z - p.z;
+        double bx = x.C.x - p.x, by = x.C.y - p.y, bz = x.C.z - p.z;
+        var alpha = 0.5 * (ax * (p.x + x.B.x) + ay * (p.y + x.B.y) + az * (p.z + x.B.z));
+        var beta = 0.5 * (bx * (p.x + x.C.x) + by * (p.y + x.C.y) + bz * (p.z + x.C.z));
+        var pi = 0.5 * (p.x * p.x + p.y * p.y + p.z * p.z);
+        double ab12 = ax * by - ay * bx, ab13 = ax * bz - az * bx, ab23 = ay * bz - az * by;
+        double cx = beta * ax - alpha * bx, cy = beta * ay - alpha * by, cz = beta * az - alpha * bz;
+        c.NoE12 = ab12;
+        c.NoE13 = ab13;
+        c.NoE23 = ab23;
+        c.E123 = p.x * ab23 - p.y * ab13 + p.z * ab12;
+        c.NoE1Ni = cx;
+        c.NoE2Ni = cy;
+        c.NoE3Ni = cz;
+        c.E12Ni = p.x * cy - p.y * cx + pi * ab12;
+        c.E13Ni = p.x * cz - p.z * cx + pi * ab13;
+        c.E23Ni = p.y * cz - p.z * cy + pi * ab23;
+    }
+}
