@@ -3,6 +3,7 @@ using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
 using RayTracer.Bounds;
 using RayTracer.Geometry;
+using RayTracer.Kernels;
 using RayTracer.Maths;
 using RayTracer.Tracing;
 
@@ -32,8 +33,8 @@ public sealed class Bvh : AccelerationStructure
 
     private readonly BvhNode[] _nodes;
     private readonly Bvh4Node[] _wide = [];
-    private readonly int[] _leafOffset = [];
-    private readonly int[] _leafCount = [];
+    private readonly BvhLeaf[] _leaves = [];
+    private readonly TriangleGroup4[] _groups = [];
 
     public Bvh(IReadOnlyList<GeometricObject> objects, int maxLeafSize = 4)
         : base(objects)
@@ -65,8 +66,11 @@ public sealed class Bvh : AccelerationStructure
         var leafCounts = new List<int>();
         Collapse(0, wide, leafOffsets, leafCounts);
         _wide = [.. wide];
-        _leafOffset = [.. leafOffsets];
-        _leafCount = [.. leafCounts];
+        _leaves = new BvhLeaf[leafOffsets.Count];
+        var groups = new List<TriangleGroup4>(n / 3 + 1);
+        for (int i = 0; i < _leaves.Length; i++)
+            _leaves[i] = MakeLeafGroups(leafOffsets[i], leafCounts[i], groups);
+        _groups = [.. groups];
         BinaryNodeCount = _nodes.Length;
         _nodes = [];
     }
@@ -89,6 +93,9 @@ public sealed class Bvh : AccelerationStructure
 
         var r = new WideRay(ray);
         var nodes = _wide;
+        var leaves = _leaves;
+        var groups = _groups;
+        var lanes = new TriangleGroupSolver.RayLanes(ray);
         var table = Table;
         Span<int> stackRef = stackalloc int[StackSize];
         Span<double> stackEnter = stackalloc double[StackSize];
@@ -154,9 +161,33 @@ public sealed class Bvh : AccelerationStructure
                     break;
                 }
 
-                int leaf = ~reference;
-                int first = _leafOffset[leaf], end = first + _leafCount[leaf];
-                for (int i = first; i < end; i++)
+                ref var leaf = ref leaves[~reference];
+                if (leaf.Group >= 0)
+                {
+                    for (int g = 0; g < leaf.GroupCount; g++)
+                    {
+                        var tMax = Vector256.Create(t);
+                        var tv = TriangleGroupSolver.Distances(lanes, ref groups[leaf.Group + g], tMax);
+                        int found = (int)Vector256.LessThan(tv, tMax).ExtractMostSignificantBits();
+                        while (found != 0)
+                        {
+                            // Lanes in index order with a strict test: ties go to the lower index, as in the scalar loop.
+                            int lane = BitOperations.TrailingZeroCount(found);
+                            found &= found - 1;
+                            double ti = tv.GetElement(lane);
+                            if (ti < t)
+                            {
+                                t = ti;
+                                primitive = leaf.First + 4 * g + lane;
+                                hit = true;
+                            }
+                        }
+                    }
+
+                    continue;
+                }
+
+                for (int i = leaf.First, end = leaf.First + leaf.Count; i < end; i++)
                 {
                     double ti = table.Distance(i, ray, t);
                     if (ti < t)
@@ -180,7 +211,11 @@ public sealed class Bvh : AccelerationStructure
 
         var r = new WideRay(ray);
         var nodes = _wide;
+        var leaves = _leaves;
+        var groups = _groups;
+        var lanes = new TriangleGroupSolver.RayLanes(ray);
         var table = Table;
+        var tMaxLanes = Vector256.Create(tMax);
         Span<int> stackRef = stackalloc int[StackSize];
         int sp = 0;
         stackRef[sp++] = 0;
@@ -190,9 +225,21 @@ public sealed class Bvh : AccelerationStructure
             int reference = stackRef[--sp];
             if (reference < 0)
             {
-                int leaf = ~reference;
-                int first = _leafOffset[leaf], end = first + _leafCount[leaf];
-                for (int i = first; i < end; i++)
+                ref var leaf = ref leaves[~reference];
+                if (leaf.Group >= 0 && leaf.GroupsCastShadows)
+                {
+                    for (int g = 0; g < leaf.GroupCount; g++)
+                    {
+                        if (Vector256.LessThanAny(TriangleGroupSolver.Distances(lanes, ref groups[leaf.Group + g], tMaxLanes), tMaxLanes))
+                        {
+                            return true;
+                        }
+                    }
+
+                    continue;
+                }
+
+                for (int i = leaf.First, end = leaf.First + leaf.Count; i < end; i++)
                 {
                     if (table.Occludes(i, ray, tMax))
                     {
@@ -214,6 +261,53 @@ public sealed class Bvh : AccelerationStructure
         }
 
         return false;
+    }
+
+    /// <summary>Describes a leaf and, when all its primitives are Möller–Trumbore triangles, packs them into four-lane groups.</summary>
+    private BvhLeaf MakeLeafGroups(int first, int count, List<TriangleGroup4> groups)
+    {
+        var leaf = new BvhLeaf { First = first, Count = count, Group = -1 };
+        bool castShadows = true;
+        for (int i = first; i < first + count; i++)
+        {
+            if (!Table.IsMollerTrumbore(i))
+            {
+                return leaf;
+            }
+
+            castShadows &= Table.CastsShadows(i);
+        }
+
+        leaf.Group = groups.Count;
+        leaf.GroupCount = (count + 3) / 4;
+        leaf.GroupsCastShadows = castShadows;
+        Span<double> lanes = stackalloc double[9 * 4];
+        for (int k = 0; k < count; k += 4)
+        {
+            lanes.Clear();
+            for (int lane = 0; lane < 4 && k + lane < count; lane++)
+            {
+                ref readonly var tri = ref Table.Packed(first + k + lane);
+                lanes[lane] = tri.V0.x;
+                lanes[4 + lane] = tri.V0.y;
+                lanes[8 + lane] = tri.V0.z;
+                lanes[12 + lane] = tri.E1.x;
+                lanes[16 + lane] = tri.E1.y;
+                lanes[20 + lane] = tri.E1.z;
+                lanes[24 + lane] = tri.E2.x;
+                lanes[28 + lane] = tri.E2.y;
+                lanes[32 + lane] = tri.E2.z;
+            }
+
+            groups.Add(new TriangleGroup4
+            {
+                V0 = new Vector3x4 { x = Vector256.Create<double>(lanes[..4]), y = Vector256.Create<double>(lanes[4..8]), z = Vector256.Create<double>(lanes[8..12]) },
+                E1 = new Vector3x4 { x = Vector256.Create<double>(lanes[12..16]), y = Vector256.Create<double>(lanes[16..20]), z = Vector256.Create<double>(lanes[20..24]) },
+                E2 = new Vector3x4 { x = Vector256.Create<double>(lanes[24..28]), y = Vector256.Create<double>(lanes[28..32]), z = Vector256.Create<double>(lanes[32..36]) },
+            });
+        }
+
+        return leaf;
     }
 
     /// <summary>
@@ -356,7 +450,7 @@ public sealed class Bvh : AccelerationStructure
         }
 
         double splitCost = TraversalCost + IntersectionCost * bestCost / Math.Max(box.SurfaceArea, double.Epsilon);
-        if (splitCost >= IntersectionCost * count && count <= MaxLeafSize)
+        if (splitCost >= IntersectionCost * GroupsOf(count) && count <= MaxLeafSize)
         {
             return MakeLeaf(nodes, index, start, count, box);
         }
@@ -423,7 +517,7 @@ public sealed class Bvh : AccelerationStructure
                 continue;
             }
 
-            double cost = acc.SurfaceArea * accCount + rightArea[b] * rightCount[b];
+            double cost = acc.SurfaceArea * GroupsOf(accCount) + rightArea[b] * GroupsOf(rightCount[b]);
             if (cost < bestCost)
             {
                 bestCost = cost;
@@ -499,6 +593,12 @@ public sealed class Bvh : AccelerationStructure
         /// </summary>
         private static double Reciprocal(double d) => d != 0 ? 1.0 / d : Math.CopySign(1e300, d);
     }
+
+    /// <summary>
+    /// Leaf tests cost per four-lane group rather than per triangle: up to four triangles are tested
+    /// for the price of one, so the heuristic keeps them together.
+    /// </summary>
+    private static int GroupsOf(int count) => (count + 3) >> 2;
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static int BinOf(double c, double lo, double scale) =>

@@ -123,6 +123,14 @@ internal sealed class PrimitiveTable
         _castsShadows = Gather(_castsShadows, order);
     }
 
+    /// <summary>Whether primitive i is a triangle tested with Möller–Trumbore, so it can join a four-lane group.</summary>
+    public bool IsMollerTrumbore(int i) => _kind[i] == PrimitiveKind.MollerTrumbore;
+
+    /// <summary>The packed form of a triangle for which <see cref="IsMollerTrumbore"/> holds.</summary>
+    public ref readonly PackedTriangle Packed(int i) => ref _triangles[i];
+
+    public bool CastsShadows(int i) => _castsShadows[i];
+
     public void ReleaseBuildData()
     {
         Bounds = [];
