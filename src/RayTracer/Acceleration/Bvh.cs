@@ -17,13 +17,10 @@ namespace RayTracer.Acceleration;
 /// </summary>
 public sealed class Bvh : AccelerationStructure
 {
-    private const int BinCount = 16;
     private const int MaxDepth = 60;
 
     // Each wide level pushes at most three entries beyond the one it pops.
     private const int StackSize = 3 * MaxDepth + 8;
-    private const double TraversalCost = 1.0;
-    private const double IntersectionCost = 1.0;
 
     // Rounding slack on far slab distances (pbrt's 1 + 2γ₃) so no ray slips between adjacent boxes.
     private const double FarSlack = 1.0 + 6.0 * 1.1102230246251565e-16;
@@ -48,17 +45,9 @@ public sealed class Bvh : AccelerationStructure
             return;
         }
 
-        var order = new int[n];
-        for (int i = 0; i < n; i++)
-        {
-            order[i] = i;
-        }
-
-        var nodes = new List<BvhNode>(2 * n / Math.Max(1, maxLeafSize) + 1);
-        Build(nodes, order, 0, n, 0);
-        _nodes = [.. nodes];
-        Table.Permute(order);
+        _nodes = BvhBuilder.Build(Table.Bounds, maxLeafSize, MaxDepth, out var order);
         Table.ReleaseBuildData();
+        Table.Permute(order);
 
         // Collapse pairs of levels into four-wide nodes for traversal.
         var wide = new List<Bvh4Node>(_nodes.Length / 3 + 1);
@@ -325,8 +314,8 @@ public sealed class Bvh : AccelerationStructure
         }
         else
         {
-            slots[count++] = binary + 1;
             slots[count++] = root.Offset;
+            slots[count++] = root.Offset + 1;
             while (count < 4)
             {
                 int best = -1;
@@ -347,8 +336,8 @@ public sealed class Bvh : AccelerationStructure
                 }
 
                 int opened = slots[best];
-                slots[best] = opened + 1;
-                slots[count++] = _nodes[opened].Offset;
+                slots[best] = _nodes[opened].Offset;
+                slots[count++] = _nodes[opened].Offset + 1;
             }
         }
 
@@ -402,155 +391,6 @@ public sealed class Bvh : AccelerationStructure
         return index;
     }
 
-    /// <summary>Builds the subtree over order[start..end) and returns its node index.</summary>
-    private int Build(List<BvhNode> nodes, int[] order, int start, int end, int depth)
-    {
-        var bounds = Table.Bounds;
-        var centroids = Table.Centroids;
-        BoundingBox box = BoundingBox.Empty, centroidBox = BoundingBox.Empty;
-        for (int i = start; i < end; i++)
-        {
-            box.Include(bounds[order[i]]);
-            centroidBox.Include(centroids[order[i]]);
-        }
-
-        int index = nodes.Count;
-        nodes.Add(new BvhNode { Bounds = box });
-        int count = end - start;
-        int longest = centroidBox.LongestAxis;
-        var extent = centroidBox.Diagonal;
-
-        if (count <= 1 || depth >= MaxDepth || !(extent[longest] > 0))
-        {
-            if (count > MaxLeafSize && depth < MaxDepth && count > 1)
-            {
-                // All centroids coincide: split the range in half to keep leaves small.
-                int half = start + count / 2;
-                return MakeInterior(nodes, order, index, start, half, end, depth, longest, box);
-            }
-
-            return MakeLeaf(nodes, index, start, count, box);
-        }
-
-        // Binned SAH on every axis with a spread of centroids; the cheapest plane wins.
-        double bestCost = double.PositiveInfinity;
-        int bestAxis = longest, bestBin = 1;
-        for (int axis = 0; axis < 3; axis++)
-        {
-            if (extent[axis] > 0)
-            {
-                double cost = EvaluateSah(order, start, end, axis, centroidBox.Min[axis], centroidBox.Max[axis], out int bin);
-                if (cost < bestCost)
-                {
-                    bestCost = cost;
-                    bestAxis = axis;
-                    bestBin = bin;
-                }
-            }
-        }
-
-        double splitCost = TraversalCost + IntersectionCost * bestCost / Math.Max(box.SurfaceArea, double.Epsilon);
-        if (splitCost >= IntersectionCost * GroupsOf(count) && count <= MaxLeafSize)
-        {
-            return MakeLeaf(nodes, index, start, count, box);
-        }
-
-        int mid = Partition(order, start, end, bestAxis, centroidBox.Min[bestAxis], centroidBox.Max[bestAxis], bestBin);
-        return MakeInterior(nodes, order, index, start, mid, end, depth, bestAxis, box);
-    }
-
-    private int MakeInterior(List<BvhNode> nodes, int[] order, int index, int start, int mid, int end, int depth, int axis, BoundingBox box)
-    {
-        Build(nodes, order, start, mid, depth + 1);
-        int second = Build(nodes, order, mid, end, depth + 1);
-        nodes[index] = new BvhNode { Bounds = box, Offset = second, Count = 0, Axis = axis };
-        return index;
-    }
-
-    private static int MakeLeaf(List<BvhNode> nodes, int index, int start, int count, BoundingBox box)
-    {
-        nodes[index] = new BvhNode { Bounds = box, Offset = start, Count = count };
-        return index;
-    }
-
-    /// <summary>Bins centroids along one axis and returns the cheapest SAH cost (area-weighted counts) and its bin boundary.</summary>
-    private double EvaluateSah(int[] order, int start, int end, int axis, double lo, double hi, out int bestSplit)
-    {
-        var bounds = Table.Bounds;
-        var centroids = Table.Centroids;
-        Span<int> binCounts = stackalloc int[BinCount];
-        Span<BoundingBox> binBounds = stackalloc BoundingBox[BinCount];
-        binCounts.Clear();
-        binBounds.Fill(BoundingBox.Empty);
-
-        double scale = BinCount * (1 - 1e-9) / (hi - lo);
-        for (int i = start; i < end; i++)
-        {
-            int b = BinOf(centroids[order[i]][axis], lo, scale);
-            binCounts[b]++;
-            binBounds[b].Include(bounds[order[i]]);
-        }
-
-        // Sweep from the right to get the area and count of every right-hand side.
-        Span<double> rightArea = stackalloc double[BinCount];
-        Span<int> rightCount = stackalloc int[BinCount];
-        var acc = BoundingBox.Empty;
-        int accCount = 0;
-        for (int b = BinCount - 1; b > 0; b--)
-        {
-            acc.Include(binBounds[b]);
-            accCount += binCounts[b];
-            rightArea[b] = acc.SurfaceArea;
-            rightCount[b] = accCount;
-        }
-
-        double bestCost = double.PositiveInfinity;
-        bestSplit = 1;
-        acc = BoundingBox.Empty;
-        accCount = 0;
-        for (int b = 1; b < BinCount; b++)
-        {
-            acc.Include(binBounds[b - 1]);
-            accCount += binCounts[b - 1];
-            if (accCount == 0 || rightCount[b] == 0)
-            {
-                continue;
-            }
-
-            double cost = acc.SurfaceArea * GroupsOf(accCount) + rightArea[b] * GroupsOf(rightCount[b]);
-            if (cost < bestCost)
-            {
-                bestCost = cost;
-                bestSplit = b;
-            }
-        }
-
-        return bestCost;
-    }
-
-    /// <summary>Moves primitives whose centroid bins below <paramref name="split"/> to the front; returns the boundary.</summary>
-    private int Partition(int[] order, int start, int end, int axis, double lo, double hi, int split)
-    {
-        var centroids = Table.Centroids;
-        double scale = BinCount * (1 - 1e-9) / (hi - lo);
-        int left = start, right = end - 1;
-        while (left <= right)
-        {
-            if (BinOf(centroids[order[left]][axis], lo, scale) < split)
-            {
-                left++;
-            }
-            else
-            {
-                (order[left], order[right]) = (order[right], order[left]);
-                right--;
-            }
-        }
-
-        // Both sides are non-empty when the split came from the SAH sweep; guard anyway.
-        return left == start || left == end ? start + (end - start) / 2 : left;
-    }
-
     /// <summary>Ray broadcast into vectors for testing four boxes at once.</summary>
     private readonly struct WideRay
     {
@@ -593,14 +433,4 @@ public sealed class Bvh : AccelerationStructure
         /// </summary>
         private static double Reciprocal(double d) => d != 0 ? 1.0 / d : Math.CopySign(1e300, d);
     }
-
-    /// <summary>
-    /// Leaf tests cost per four-lane group rather than per triangle: up to four triangles are tested
-    /// for the price of one, so the heuristic keeps them together.
-    /// </summary>
-    private static int GroupsOf(int count) => (count + 3) >> 2;
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static int BinOf(double c, double lo, double scale) =>
-        Math.Clamp((int)((c - lo) * scale), 0, BinCount - 1);
 }
