@@ -45,7 +45,7 @@ public sealed class Bvh : AccelerationStructure
             return;
         }
 
-        _nodes = BvhBuilder.Build(Table.Bounds, maxLeafSize, MaxDepth, out var order);
+        _nodes = BvhBuilder.Build(Table.Bounds, maxLeafSize, MaxDepth, out var order, out int binaryNodes);
         Table.ReleaseBuildData();
         Table.Permute(order);
 
@@ -55,12 +55,9 @@ public sealed class Bvh : AccelerationStructure
         var leafCounts = new List<int>();
         Collapse(0, wide, leafOffsets, leafCounts);
         _wide = [.. wide];
-        _leaves = new BvhLeaf[leafOffsets.Count];
-        var groups = new List<TriangleGroup4>(n / 3 + 1);
-        for (int i = 0; i < _leaves.Length; i++)
-            _leaves[i] = MakeLeafGroups(leafOffsets[i], leafCounts[i], groups);
-        _groups = [.. groups];
-        BinaryNodeCount = _nodes.Length;
+        _leaves = DescribeLeaves(leafOffsets, leafCounts, out int groupCount);
+        _groups = FillGroups(_leaves, groupCount);
+        BinaryNodeCount = binaryNodes;
         _nodes = [];
     }
 
@@ -252,51 +249,66 @@ public sealed class Bvh : AccelerationStructure
         return false;
     }
 
-    /// <summary>Describes a leaf and, when all its primitives are Möller–Trumbore triangles, packs them into four-lane groups.</summary>
-    private BvhLeaf MakeLeafGroups(int first, int count, List<TriangleGroup4> groups)
+    /// <summary>
+    /// The leaves, each with its run of four-lane groups when all its primitives are Möller–Trumbore
+    /// triangles; <paramref name="groupCount"/> is the number of groups.
+    /// </summary>
+    private BvhLeaf[] DescribeLeaves(List<int> offsets, List<int> counts, out int groupCount)
     {
-        var leaf = new BvhLeaf { First = first, Count = count, Group = -1 };
-        bool castShadows = true;
-        for (int i = first; i < first + count; i++)
+        var leaves = new BvhLeaf[offsets.Count];
+        groupCount = 0;
+        for (int l = 0; l < leaves.Length; l++)
         {
-            if (!Table.IsMollerTrumbore(i))
+            int first = offsets[l], count = counts[l];
+            leaves[l] = new BvhLeaf { First = first, Count = count, Group = -1 };
+            bool triangles = true, castShadows = true;
+            for (int i = first; i < first + count; i++)
             {
-                return leaf;
+                triangles &= Table.IsMollerTrumbore(i);
+                castShadows &= Table.CastsShadows(i);
             }
 
-            castShadows &= Table.CastsShadows(i);
-        }
-
-        leaf.Group = groups.Count;
-        leaf.GroupCount = (count + 3) / 4;
-        leaf.GroupsCastShadows = castShadows;
-        Span<double> lanes = stackalloc double[9 * 4];
-        for (int k = 0; k < count; k += 4)
-        {
-            lanes.Clear();
-            for (int lane = 0; lane < 4 && k + lane < count; lane++)
+            if (triangles)
             {
-                ref readonly var tri = ref Table.Packed(first + k + lane);
-                lanes[lane] = tri.V0.x;
-                lanes[4 + lane] = tri.V0.y;
-                lanes[8 + lane] = tri.V0.z;
-                lanes[12 + lane] = tri.E1.x;
-                lanes[16 + lane] = tri.E1.y;
-                lanes[20 + lane] = tri.E1.z;
-                lanes[24 + lane] = tri.E2.x;
-                lanes[28 + lane] = tri.E2.y;
-                lanes[32 + lane] = tri.E2.z;
+                leaves[l].Group = groupCount;
+                leaves[l].GroupCount = (count + 3) / 4;
+                leaves[l].GroupsCastShadows = castShadows;
+                groupCount += leaves[l].GroupCount;
             }
-
-            groups.Add(new TriangleGroup4
-            {
-                V0 = new Vector3x4 { x = Vector256.Create<double>(lanes[..4]), y = Vector256.Create<double>(lanes[4..8]), z = Vector256.Create<double>(lanes[8..12]) },
-                E1 = new Vector3x4 { x = Vector256.Create<double>(lanes[12..16]), y = Vector256.Create<double>(lanes[16..20]), z = Vector256.Create<double>(lanes[20..24]) },
-                E2 = new Vector3x4 { x = Vector256.Create<double>(lanes[24..28]), y = Vector256.Create<double>(lanes[28..32]), z = Vector256.Create<double>(lanes[32..36]) },
-            });
         }
 
-        return leaf;
+        return leaves;
+    }
+
+    /// <summary>Copies the leaves' triangles into their groups, lane by lane; lanes left over stay zero and never hit.</summary>
+    private TriangleGroup4[] FillGroups(BvhLeaf[] leaves, int groupCount)
+    {
+        var groups = new TriangleGroup4[groupCount];
+        const int LeavesPerTask = 4096;
+        Parallel.For(0, (leaves.Length + LeavesPerTask - 1) / LeavesPerTask, chunk =>
+        {
+            for (int l = chunk * LeavesPerTask; l < Math.Min(leaves.Length, (chunk + 1) * LeavesPerTask); l++)
+            {
+                var leaf = leaves[l];
+                for (int k = 0; leaf.Group >= 0 && k < leaf.Count; k++)
+                {
+                    ref var group = ref groups[leaf.Group + k / 4];
+                    ref readonly var tri = ref Table.Packed(leaf.First + k);
+                    int lane = k % 4;
+                    SetLane(ref group.V0, lane, tri.V0.x, tri.V0.y, tri.V0.z);
+                    SetLane(ref group.E1, lane, tri.E1.x, tri.E1.y, tri.E1.z);
+                    SetLane(ref group.E2, lane, tri.E2.x, tri.E2.y, tri.E2.z);
+                }
+            }
+        });
+        return groups;
+    }
+
+    private static void SetLane(ref Vector3x4 v, int lane, double x, double y, double z)
+    {
+        v.x = v.x.WithElement(lane, x);
+        v.y = v.y.WithElement(lane, y);
+        v.z = v.z.WithElement(lane, z);
     }
 
     /// <summary>

@@ -7,8 +7,8 @@ namespace RayTracer.Acceleration;
 
 /// <summary>
 /// Top-down binned SAH build of a binary tree. Each primitive's box travels with it through the
-/// partitions (min and max in two vectors, the primitive's index in the fourth lane of the min), so
-/// binning reads memory in order; one pass bins all three axes at once, and the partition pass also
+/// partitions (min and max as two single-precision vectors, rounded outward from the double box, and
+/// its index alongside), so binning reads 32 bytes per primitive in order; one pass bins all three axes at once, and the partition pass also
 /// gathers the children's boxes and centroid boxes. Subtrees above a size threshold are built in
 /// parallel, their node pairs taken from a shared counter.
 /// </summary>
@@ -18,11 +18,18 @@ internal sealed class BvhBuilder
 
     /// <summary>Subtrees smaller than this are built on the calling thread.</summary>
     private const int ParallelThreshold = 8192;
+
+    /// <summary>Ranges at least this large are binned by all processors together.</summary>
+    private const int ParallelBinning = 1 << 17;
+
+    /// <summary>Primitives per work item of the parallel loops over all of them.</summary>
+    private const int ChunkSize = 1 << 16;
     private const double TraversalCost = 1.0;
     private const double IntersectionCost = 1.0;
 
-    private readonly Vector256<double>[] _min;
-    private readonly Vector256<double>[] _max;
+    private readonly Vector128<float>[] _min;
+    private readonly Vector128<float>[] _max;
+    private readonly int[] _index;
     private readonly BvhNode[] _nodes;
     private readonly int _maxLeafSize;
     private readonly int _maxDepth;
@@ -31,45 +38,69 @@ internal sealed class BvhBuilder
     private BvhBuilder(BoundingBox[] bounds, int maxLeafSize, int maxDepth)
     {
         int n = bounds.Length;
-        _min = new Vector256<double>[n];
-        _max = new Vector256<double>[n];
-        for (int i = 0; i < n; i++)
+        _min = new Vector128<float>[n];
+        _max = new Vector128<float>[n];
+        _index = new int[n];
+        Parallel.For(0, (n + ChunkSize - 1) / ChunkSize, chunk =>
         {
-            ref readonly var b = ref bounds[i];
-            _min[i] = Vector256.Create(b.Min.x, b.Min.y, b.Min.z, i);
-            _max[i] = Vector256.Create(b.Max.x, b.Max.y, b.Max.z, 0);
-        }
+            for (int i = chunk * ChunkSize, end = Math.Min(n, i + ChunkSize); i < end; i++)
+            {
+                ref readonly var b = ref bounds[i];
+                _min[i] = Vector128.Create(Down(b.Min.x), Down(b.Min.y), Down(b.Min.z), 0);
+                _max[i] = Vector128.Create(Up(b.Max.x), Up(b.Max.y), Up(b.Max.z), 0);
+                _index[i] = i;
+            }
+        });
 
         _nodes = new BvhNode[Math.Max(1, 2 * n - 1)];
         _maxLeafSize = maxLeafSize;
         _maxDepth = maxDepth;
     }
 
-    /// <summary>Builds the tree over <paramref name="bounds"/>; order[i] is the primitive at build position i.</summary>
-    public static BvhNode[] Build(BoundingBox[] bounds, int maxLeafSize, int maxDepth, out int[] order)
+    /// <summary>
+    /// Builds the tree over <paramref name="bounds"/> with its root at 0; order[i] is the primitive at build
+    /// position i, and the first <paramref name="nodeCount"/> nodes are used.
+    /// </summary>
+    public static BvhNode[] Build(BoundingBox[] bounds, int maxLeafSize, int maxDepth, out int[] order, out int nodeCount)
     {
         var builder = new BvhBuilder(bounds, maxLeafSize, maxDepth);
         int n = bounds.Length;
-        var box = Empty;
-        var centroids = Empty;
-        for (int i = 0; i < n; i++)
+        var root = (Box: Empty, Centroids: Empty);
+        var gate = new object();
+        Parallel.For(0, (n + ChunkSize - 1) / ChunkSize, chunk =>
         {
-            box.Include(builder._min[i], builder._max[i]);
-            centroids.Include(builder._min[i] + builder._max[i]);
-        }
+            var part = builder.Bounds(chunk * ChunkSize, Math.Min(n, (chunk + 1) * ChunkSize));
+            lock (gate)
+                root = (Union(root.Box, part.Box), Union(root.Centroids, part.Centroids));
+        });
 
         builder._nodeCount = 1;
-        builder.Subtree(0, 0, n, box, centroids, 0);
-        order = new int[n];
-        for (int i = 0; i < n; i++)
-            order[i] = (int)builder._min[i].GetElement(3);
-        return builder._nodes[..builder._nodeCount];
+        builder.Subtree(0, 0, n, root.Box, root.Centroids, 0);
+        order = builder._index;
+        nodeCount = builder._nodeCount;
+
+        // Nodes past the count are never referred to; the array is returned as is rather than copied.
+        return builder._nodes;
     }
 
     /// <summary>Leaf tests cost per four-lane group: up to four triangles are tested for the price of one.</summary>
     public static int GroupsOf(int count) => (count + 3) >> 2;
 
-    private static Box Empty => new(Vector256.Create(double.PositiveInfinity), Vector256.Create(double.NegativeInfinity));
+    private static Box Empty => new(Vector128.Create(float.PositiveInfinity), Vector128.Create(float.NegativeInfinity));
+
+    /// <summary>The largest float not above <paramref name="x"/>.</summary>
+    private static float Down(double x)
+    {
+        float f = (float)x;
+        return f > x ? MathF.BitDecrement(f) : f;
+    }
+
+    /// <summary>The smallest float not below <paramref name="x"/>.</summary>
+    private static float Up(double x)
+    {
+        float f = (float)x;
+        return f < x ? MathF.BitIncrement(f) : f;
+    }
 
     /// <summary>
     /// Fills node <paramref name="index"/> with the subtree over [start, end), whose box is
@@ -79,7 +110,14 @@ internal sealed class BvhBuilder
     {
         int count = end - start;
         var extent = centroids.Max - centroids.Min;
-        if (count == 1 || depth >= _maxDepth || !(Vector256.GreaterThanAny(extent.WithElement(3, 0), Vector256<double>.Zero)))
+        // Up to four primitives cost one group test, less than any split (which adds a traversal step).
+        if (count <= Math.Min(_maxLeafSize, 4))
+        {
+            _nodes[index] = new BvhNode { Bounds = box.ToBoundingBox(), Offset = start, Count = count };
+            return;
+        }
+
+        if (depth >= _maxDepth || !(Vector128.GreaterThanAny(extent.WithElement(3, 0), Vector128<float>.Zero)))
         {
             if (count > _maxLeafSize && depth < _maxDepth)
             {
@@ -108,8 +146,7 @@ internal sealed class BvhBuilder
             return;
         }
 
-        double lo = centroids.Min.GetElement(axis), scale = BinCount * (1 - 1e-9) / Math.Max(extent.GetElement(axis), double.Epsilon);
-        int mid = Partition(start, end, axis, lo, scale, split, out var left, out var right);
+        int mid = Partition(start, end, axis, BinScale(centroids, BinsFor(count)), split, out var left, out var right);
         Interior(index, start, mid, end, left, right, depth);
     }
 
@@ -153,24 +190,36 @@ internal sealed class BvhBuilder
     {
         Span<Box> bins = stackalloc Box[3 * BinCount];
         Span<int> counts = stackalloc int[3 * BinCount];
-        bins.Fill(Empty);
-        counts.Clear();
-        var lo = centroids.Min;
+        int count = end - start;
+        int binCount = BinsFor(count);
+        var (lo, scale, _) = BinScale(centroids, binCount);
         var extent = centroids.Max - lo;
-        var scale = Vector256.Create(BinCount * (1 - 1e-9)) / Vector256.Max(extent, Vector256.Create(double.Epsilon));
-        var last = Vector256.Create(BinCount - 1.0);
-        for (int i = start; i < end; i++)
+        if (count < ParallelBinning)
         {
-            var min = _min[i];
-            var max = _max[i];
-            var b = Vector256.Min(Vector256.Max(Vector256.Floor((min + max - lo) * scale), Vector256<double>.Zero), last);
-            int bx = (int)b.GetElement(0), by = BinCount + (int)b.GetElement(1), bz = 2 * BinCount + (int)b.GetElement(2);
-            bins[bx].Include(min, max);
-            counts[bx]++;
-            bins[by].Include(min, max);
-            counts[by]++;
-            bins[bz].Include(min, max);
-            counts[bz]++;
+            Bin(start, end, lo, scale, binCount, bins, counts);
+        }
+        else
+        {
+            // Near the root the subtrees are still few: the processors bin slices and the bins are merged.
+            int slices = Environment.ProcessorCount;
+            var sliceBins = new Box[slices][];
+            var sliceCounts = new int[slices][];
+            Parallel.For(0, slices, k =>
+            {
+                sliceBins[k] = new Box[3 * BinCount];
+                sliceCounts[k] = new int[3 * BinCount];
+                Bin(start + (int)((long)count * k / slices), start + (int)((long)count * (k + 1) / slices), lo, scale, binCount, sliceBins[k], sliceCounts[k]);
+            });
+            bins.Fill(Empty);
+            counts.Clear();
+            for (int k = 0; k < slices; k++)
+            {
+                for (int b = 0; b < bins.Length; b++)
+                {
+                    bins[b] = Union(bins[b], sliceBins[k][b]);
+                    counts[b] += sliceCounts[k][b];
+                }
+            }
         }
 
         int bestAxis = -1, bestSplit = 1;
@@ -181,13 +230,13 @@ internal sealed class BvhBuilder
         {
             if (!(extent.GetElement(axis) > 0))
                 continue;
-            var axisBins = bins.Slice(axis * BinCount, BinCount);
-            var axisCounts = counts.Slice(axis * BinCount, BinCount);
+            var axisBins = bins.Slice(axis * BinCount, binCount);
+            var axisCounts = counts.Slice(axis * BinCount, binCount);
 
             // Sweep from the right for the area and count of every right-hand side, then from the left.
             var acc = Empty;
             int accCount = 0;
-            for (int b = BinCount - 1; b > 0; b--)
+            for (int b = binCount - 1; b > 0; b--)
             {
                 acc = Union(acc, axisBins[b]);
                 accCount += axisCounts[b];
@@ -197,7 +246,7 @@ internal sealed class BvhBuilder
 
             acc = Empty;
             accCount = 0;
-            for (int b = 1; b < BinCount; b++)
+            for (int b = 1; b < binCount; b++)
             {
                 acc = Union(acc, axisBins[b - 1]);
                 accCount += axisCounts[b - 1];
@@ -216,21 +265,43 @@ internal sealed class BvhBuilder
         return (bestAxis, bestSplit, bestCost);
     }
 
+    /// <summary>Counts and bounds the primitives of [start, end) in the bins of their doubled centroids on each axis.</summary>
+    private void Bin(int start, int end, Vector128<float> lo, Vector128<float> scale, int binCount, Span<Box> bins, Span<int> counts)
+    {
+        bins.Fill(Empty);
+        counts.Clear();
+        var last = Vector128.Create(binCount - 1);
+        for (int i = start; i < end; i++)
+        {
+            var min = _min[i];
+            var max = _max[i];
+            var b = BinsOf(min + max, lo, scale, last);
+            int bx = b.GetElement(0), by = BinCount + b.GetElement(1), bz = 2 * BinCount + b.GetElement(2);
+            bins[bx].Include(min, max);
+            counts[bx]++;
+            bins[by].Include(min, max);
+            counts[by]++;
+            bins[bz].Include(min, max);
+            counts[bz]++;
+        }
+    }
+
     /// <summary>
     /// Moves the primitives whose centroid bins below <paramref name="split"/> to the front and returns
     /// the boundary, with the boxes and centroid boxes of both sides.
     /// </summary>
-    private int Partition(int start, int end, int axis, double lo, double scale, int split,
+    private int Partition(int start, int end, int axis, (Vector128<float> Lo, Vector128<float> Scale, Vector128<int> Last) bins, int split,
         out (Box Box, Box Centroids) left, out (Box Box, Box Centroids) right)
     {
         var min = _min;
         var max = _max;
+        var index = _index;
         Box lb = Empty, lc = Empty, rb = Empty, rc = Empty;
         int l = start, r = end - 1;
         while (l <= r)
         {
             var c = min[l] + max[l];
-            if (BinOf(c.GetElement(axis), lo, scale) < split)
+            if (BinsOf(c, bins.Lo, bins.Scale, bins.Last).GetElement(axis) < split)
             {
                 lb.Include(min[l], max[l]);
                 lc.Include(c);
@@ -242,6 +313,7 @@ internal sealed class BvhBuilder
                 rc.Include(c);
                 (min[l], min[r]) = (min[r], min[l]);
                 (max[l], max[r]) = (max[r], max[l]);
+                (index[l], index[r]) = (index[r], index[l]);
                 r--;
             }
         }
@@ -251,35 +323,46 @@ internal sealed class BvhBuilder
         return l;
     }
 
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static int BinOf(double c, double lo, double scale) =>
-        Math.Clamp((int)Math.Floor((c - lo) * scale), 0, BinCount - 1);
+    /// <summary>Origin and scale that map doubled centroids to bins; the same for binning and partitioning.</summary>
+    private static (Vector128<float> Lo, Vector128<float> Scale, Vector128<int> Last) BinScale(Box centroids, int binCount) =>
+        (centroids.Min, Vector128.Create(binCount * (1 - 1e-6f)) / Vector128.MaxNative(centroids.Max - centroids.Min, Vector128.Create(float.Epsilon)),
+         Vector128.Create(binCount - 1));
 
-    private static Box Union(Box a, Box b) => new(Vector256.Min(a.Min, b.Min), Vector256.Max(a.Max, b.Max));
+    /// <summary>Bins for a range: small ranges get fewer, which costs them less to sweep.</summary>
+    private static int BinsFor(int count) => Math.Min(BinCount, count);
+
+    /// <summary>The bin of a doubled centroid on each axis (lane 3 is meaningless).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static Vector128<int> BinsOf(Vector128<float> c, Vector128<float> lo, Vector128<float> scale, Vector128<int> last) =>
+        Vector128.Min(Vector128.Max(Vector128.ConvertToInt32((c - lo) * scale), Vector128<int>.Zero), last);
+
+    private static Box Union(Box a, Box b) => new(Vector128.MinNative(a.Min, b.Min), Vector128.MaxNative(a.Max, b.Max));
 
     /// <summary>A box as two vectors (x, y, z and an unused fourth lane).</summary>
-    private struct Box(Vector256<double> min, Vector256<double> max)
+    private struct Box(Vector128<float> min, Vector128<float> max)
     {
-        public Vector256<double> Min = min;
-        public Vector256<double> Max = max;
+        public Vector128<float> Min = min;
+        public Vector128<float> Max = max;
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public void Include(Vector256<double> min, Vector256<double> max)
+        public void Include(Vector128<float> min, Vector128<float> max)
         {
-            Min = Vector256.Min(Min, min);
-            Max = Vector256.Max(Max, max);
+            // The native forms are single instructions; they differ only for NaN and signed zeros.
+            Min = Vector128.MinNative(Min, min);
+            Max = Vector128.MaxNative(Max, max);
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public void Include(Vector256<double> p) => Include(p, p);
+        public void Include(Vector128<float> p) => Include(p, p);
 
         public readonly double SurfaceArea
         {
             get
             {
-                var d = Max - Min;
-                double x = d.GetElement(0), y = d.GetElement(1), z = d.GetElement(2);
-                return x < 0 ? 0 : 2 * (x * y + y * z + z * x);
+                // xy + yz + zx as d · (y, z, x), lane 3 zeroed.
+                var d = (Max - Min).WithElement(3, 0);
+                var p = d * Vector128.Shuffle(d, Vector128.Create(1, 2, 0, 3));
+                return d.GetElement(0) < 0 ? 0 : 2.0 * Vector128.Sum(p);
             }
         }
 

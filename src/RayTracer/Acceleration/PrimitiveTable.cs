@@ -226,11 +226,12 @@ internal sealed class PrimitiveTable
         }
 
         var result = new T[order.Length];
-        for (int i = 0; i < order.Length; i++)
+        const int PerTask = 1 << 16;
+        Parallel.For(0, (order.Length + PerTask - 1) / PerTask, chunk =>
         {
-            result[i] = source[order[i]];
-        }
-
+            for (int i = chunk * PerTask, end = Math.Min(order.Length, i + PerTask); i < end; i++)
+                result[i] = source[order[i]];
+        });
         return result;
     }
 }
