@@ -168,7 +168,7 @@ public static class ThroughputReport
     {
         // Wall-clock rate is what a user sees; the per-CPU-second rate does not depend on how
         // busy the machine is with other work, which makes runs on shared machines comparable.
-        string build = buildTiming is { } b ? string.Create(CultureInfo.InvariantCulture, $"build {b.Wall,6:F2} s {b.Cpu,6:F2} CPU-s") : new string(' ', 26);
+        string build = buildTiming is { } b ? string.Create(CultureInfo.InvariantCulture, $"build {b.Wall,6:F3} s {b.Cpu,6:F3} CPU-s") : new string(' ', 28);
         return string.Create(CultureInfo.InvariantCulture,
             $"{name,-20} {build}   cast {timing.Wall,7:F3} s   {rays / timing.Wall / 1e6,7:F2} Mrays/s   {rays / timing.Cpu / 1e6,7:F2} Mrays per CPU-second   {counted} {timing.Count:N0}");
     }

@@ -253,6 +253,7 @@ public sealed class Bvh : AccelerationStructure
     /// The leaves, each with its run of four-lane groups when all its primitives are Möller–Trumbore
     /// triangles; <paramref name="groupCount"/> is the number of groups.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private BvhLeaf[] DescribeLeaves(List<int> offsets, List<int> counts, out int groupCount)
     {
         var leaves = new BvhLeaf[offsets.Count];
@@ -281,13 +282,14 @@ public sealed class Bvh : AccelerationStructure
     }
 
     /// <summary>Copies the leaves' triangles into their groups, lane by lane; lanes left over stay zero and never hit.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private TriangleGroup4[] FillGroups(BvhLeaf[] leaves, int groupCount)
     {
         var groups = new TriangleGroup4[groupCount];
         const int LeavesPerTask = 4096;
-        Parallel.For(0, (leaves.Length + LeavesPerTask - 1) / LeavesPerTask, chunk =>
+        ChunkedLoop.For(leaves.Length, LeavesPerTask, (start, end) =>
         {
-            for (int l = chunk * LeavesPerTask; l < Math.Min(leaves.Length, (chunk + 1) * LeavesPerTask); l++)
+            for (int l = start; l < end; l++)
             {
                 var leaf = leaves[l];
                 for (int k = 0; leaf.Group >= 0 && k < leaf.Count; k++)
@@ -315,6 +317,7 @@ public sealed class Bvh : AccelerationStructure
     /// Turns the binary subtree at <paramref name="binary"/> into a four-wide node: its children are
     /// opened, largest surface area first, until there are four slots or only leaves remain.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private int Collapse(int binary, List<Bvh4Node> wide, List<int> leafOffsets, List<int> leafCounts)
     {
         Span<int> slots = stackalloc int[4];

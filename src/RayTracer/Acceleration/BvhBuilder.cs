@@ -10,7 +10,8 @@ namespace RayTracer.Acceleration;
 /// partitions (min and max as two single-precision vectors, rounded outward from the double box, and
 /// its index alongside), so binning reads 32 bytes per primitive in order; one pass bins all three axes at once, and the partition pass also
 /// gathers the children's boxes and centroid boxes. Subtrees above a size threshold are built in
-/// parallel, their node pairs taken from a shared counter.
+/// parallel, their node pairs taken from a shared counter. The loops are compiled fully optimized
+/// at once (a build runs each of them only a few times, too few for tiered compilation to get there).
 /// </summary>
 internal sealed class BvhBuilder
 {
@@ -35,15 +36,16 @@ internal sealed class BvhBuilder
     private readonly int _maxDepth;
     private int _nodeCount;
 
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private BvhBuilder(BoundingBox[] bounds, int maxLeafSize, int maxDepth)
     {
         int n = bounds.Length;
         _min = new Vector128<float>[n];
         _max = new Vector128<float>[n];
         _index = new int[n];
-        Parallel.For(0, (n + ChunkSize - 1) / ChunkSize, chunk =>
+        ChunkedLoop.For(n, ChunkSize, (start, end) =>
         {
-            for (int i = chunk * ChunkSize, end = Math.Min(n, i + ChunkSize); i < end; i++)
+            for (int i = start; i < end; i++)
             {
                 ref readonly var b = ref bounds[i];
                 _min[i] = Vector128.Create(Down(b.Min.x), Down(b.Min.y), Down(b.Min.z), 0);
@@ -67,9 +69,9 @@ internal sealed class BvhBuilder
         int n = bounds.Length;
         var root = (Box: Empty, Centroids: Empty);
         var gate = new object();
-        Parallel.For(0, (n + ChunkSize - 1) / ChunkSize, chunk =>
+        ChunkedLoop.For(n, ChunkSize, (start, end) =>
         {
-            var part = builder.Bounds(chunk * ChunkSize, Math.Min(n, (chunk + 1) * ChunkSize));
+            var part = builder.Bounds(start, end);
             lock (gate)
                 root = (Union(root.Box, part.Box), Union(root.Centroids, part.Centroids));
         });
@@ -106,6 +108,7 @@ internal sealed class BvhBuilder
     /// Fills node <paramref name="index"/> with the subtree over [start, end), whose box is
     /// <paramref name="box"/> and whose doubled centroids span <paramref name="centroids"/>.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void Subtree(int index, int start, int end, Box box, Box centroids, int depth)
     {
         int count = end - start;
@@ -167,6 +170,7 @@ internal sealed class BvhBuilder
         }
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private (Box Box, Box Centroids) Bounds(int start, int end)
     {
         var box = Empty;
@@ -186,6 +190,7 @@ internal sealed class BvhBuilder
     /// (area-weighted group counts).
     /// </summary>
     [SkipLocalsInit]
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private (int Axis, int Split, double Cost) BestSplit(int start, int end, Box centroids)
     {
         Span<Box> bins = stackalloc Box[3 * BinCount];
@@ -266,6 +271,7 @@ internal sealed class BvhBuilder
     }
 
     /// <summary>Counts and bounds the primitives of [start, end) in the bins of their doubled centroids on each axis.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void Bin(int start, int end, Vector128<float> lo, Vector128<float> scale, int binCount, Span<Box> bins, Span<int> counts)
     {
         bins.Fill(Empty);
@@ -290,6 +296,7 @@ internal sealed class BvhBuilder
     /// Moves the primitives whose centroid bins below <paramref name="split"/> to the front and returns
     /// the boundary, with the boxes and centroid boxes of both sides.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private int Partition(int start, int end, int axis, (Vector128<float> Lo, Vector128<float> Scale, Vector128<int> Last) bins, int split,
         out (Box Box, Box Centroids) left, out (Box Box, Box Centroids) right)
     {

@@ -24,6 +24,7 @@ internal sealed class PrimitiveTable
     private PrimitiveKind[] _kind;
     private bool[] _castsShadows;
 
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     public PrimitiveTable(IReadOnlyList<GeometricObject> objects)
     {
         ArgumentNullException.ThrowIfNull(objects);
@@ -218,6 +219,7 @@ internal sealed class PrimitiveTable
         return false;
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private static T[] Gather<T>(T[] source, int[] order)
     {
         if (source.Length == 0)
@@ -227,9 +229,9 @@ internal sealed class PrimitiveTable
 
         var result = new T[order.Length];
         const int PerTask = 1 << 16;
-        Parallel.For(0, (order.Length + PerTask - 1) / PerTask, chunk =>
+        ChunkedLoop.For(order.Length, PerTask, (start, end) =>
         {
-            for (int i = chunk * PerTask, end = Math.Min(order.Length, i + PerTask); i < end; i++)
+            for (int i = start; i < end; i++)
                 result[i] = source[order[i]];
         });
         return result;
