@@ -10,10 +10,11 @@ using RayTracer.Tracing;
 namespace RayTracer.Acceleration;
 
 /// <summary>
-/// Bounding volume hierarchy built top-down with the binned surface area heuristic (16 bins on each
-/// axis), then collapsed into four-wide nodes whose child boxes are tested together with vector
-/// instructions. Traversal uses a fixed stack on the call stack (no allocation), visits entered
-/// children nearest first and skips subtrees that start beyond the best hit so far.
+/// Bounding volume hierarchy built top-down with the binned surface area heuristic (see
+/// <see cref="BvhBuilder"/>), then collapsed into four-wide nodes whose child boxes are tested together
+/// with vector instructions; leaves of triangles test four of them at once
+/// (<see cref="TriangleGroupSolver"/>). Traversal uses a fixed stack on the call stack (no allocation),
+/// visits entered children nearest first and skips subtrees that start beyond the best hit so far.
 /// </summary>
 public sealed class Bvh : AccelerationStructure
 {
