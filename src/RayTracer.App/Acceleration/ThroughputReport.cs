@@ -75,28 +75,27 @@ public static class ThroughputReport
         };
 
         AccelerationStructure? bvh = null;
-        var clock = new Stopwatch();
         Timing bvhPrimary = default;
+        BuildTiming bvhBuild = default;
         foreach (var (name, build) in builders)
         {
-            GC.Collect();
-            clock.Restart();
-            var structure = build(primitives);
-            double buildSeconds = clock.Elapsed.TotalSeconds;
+            // The BVH, compared with Embree below, is built twice and the faster build counts.
+            var (structure, buildTiming) = TimeBuild(() => build(primitives), name == "SAH BVH" ? 2 : 1);
             var timing = Time(new Nearest(structure), rays, double.PositiveInfinity, threads);
-            output.WriteLine(Row(name, buildSeconds, timing, rays.Length, "hits"));
+            output.WriteLine(Row(name, buildTiming, timing, rays.Length, "hits"));
             bvh = structure;
             bvhPrimary = timing;
+            bvhBuild = buildTiming;
         }
 
         // The BVH's primary hits, untimed, give the shadow rays both libraries cast.
         var shadowRays = ShadowRays(bvh!, mesh, rays, threads, out var light);
 
-        GC.Collect();
-        clock.Restart();
-        using var embree = EmbreeScene.TryCreate(mesh, threads, out var problem);
-        double embreeBuild = clock.Elapsed.TotalSeconds;
-        Timing embreePrimary = default;
+        // Built twice too: the first build also loads the library and starts its threads.
+        string? problem = null;
+        var (embree, embreeBuild) = TimeBuild(() => EmbreeScene.TryCreate(mesh, threads, out problem), 2);
+        using var embreeScope = embree;
+        Timing embreePrimary = default, embreeShadow = default;
         if (embree is null)
         {
             output.WriteLine($"{"Embree",-20} skipped: {problem}");
@@ -119,7 +118,7 @@ public static class ThroughputReport
         output.WriteLine(Row("SAH BVH any hit", null, bvhShadow, shadowRays.Length, "occluded"));
         if (embree is not null)
         {
-            var embreeShadow = Time(new Any(embree), shadowRays, 1.0, threads);
+            embreeShadow = Time(new Any(embree), shadowRays, 1.0, threads);
             output.WriteLine(Row("Embree rtcOccluded1", null, embreeShadow, shadowRays.Length, "occluded"));
             long differ = CountDisagreements(new Any(bvh!), new Any(embree), shadowRays, 1.0, threads);
             output.WriteLine(Comparison(bvhShadow, embreeShadow, "occluded", differ, "rtcOccluded1"));
@@ -127,14 +126,49 @@ public static class ThroughputReport
             output.WriteLine(Row("Embree rtcOccluded8", null, packets, shadowRays.Length, "occluded"));
             differ = CountDisagreements(new Any(bvh!), new EmbreePackets(embree, anyHit: true), shadowRays, 1.0, threads);
             output.WriteLine(Comparison(bvhShadow, packets, "occluded", differ, "rtcOccluded8"));
+            output.WriteLine(Summary(bvhPrimary, embreePrimary, bvhShadow, embreeShadow, bvhBuild, embreeBuild));
         }
     }
 
-    private static string Row(string name, double? buildSeconds, Timing timing, int rays, string counted)
+    /// <summary>
+    /// The three figures the BVH is judged by, each ours against Embree's single-ray calls in this run:
+    /// primary and shadow throughput as a fraction of Embree's (per CPU-second, which other work on the
+    /// machine disturbs least, and wall clock), and build time as a multiple of Embree's.
+    /// </summary>
+    private static string Summary(Timing primary, Timing embreePrimary, Timing shadow, Timing embreeShadow, BuildTiming build, BuildTiming embreeBuild) =>
+        string.Create(CultureInfo.InvariantCulture, $"""
+            ratios, SAH BVH against Embree in this run:
+              primary rays (rtcIntersect1)  {embreePrimary.Cpu / primary.Cpu,5:F2} of Embree's Mrays per CPU-second ({embreePrimary.Wall / primary.Wall:F2} wall)   goal >= 0.80
+              shadow rays (rtcOccluded1)    {embreeShadow.Cpu / shadow.Cpu,5:F2} of Embree's Mrays per CPU-second ({embreeShadow.Wall / shadow.Wall:F2} wall)
+              build time                    {build.Wall / embreeBuild.Wall,5:F2} times Embree's wall-clock time ({build.Cpu / embreeBuild.Cpu:F2} of its CPU time)   goal <= 1.50
+            """);
+
+    /// <summary>The fastest of <paramref name="builds"/> builds, wall clock and process CPU time; earlier results are disposed of.</summary>
+    private static (T Result, BuildTiming Timing) TimeBuild<T>(Func<T> build, int builds)
+    {
+        var clock = new Stopwatch();
+        T result = default!;
+        BuildTiming best = new(double.PositiveInfinity, double.PositiveInfinity);
+        for (int i = 0; i < builds; i++)
+        {
+            (result as IDisposable)?.Dispose();
+            result = default!;
+            GC.Collect();
+            var cpuBefore = Environment.CpuUsage.TotalTime;
+            clock.Restart();
+            result = build();
+            double wall = clock.Elapsed.TotalSeconds, cpu = (Environment.CpuUsage.TotalTime - cpuBefore).TotalSeconds;
+            best = new BuildTiming(Math.Min(best.Wall, wall), Math.Min(best.Cpu, cpu));
+        }
+
+        return (result, best);
+    }
+
+    private static string Row(string name, BuildTiming? buildTiming, Timing timing, int rays, string counted)
     {
         // Wall-clock rate is what a user sees; the per-CPU-second rate does not depend on how
         // busy the machine is with other work, which makes runs on shared machines comparable.
-        string build = buildSeconds is { } b ? string.Create(CultureInfo.InvariantCulture, $"build {b,7:F2} s") : new string(' ', 15);
+        string build = buildTiming is { } b ? string.Create(CultureInfo.InvariantCulture, $"build {b.Wall,6:F3} s {b.Cpu,6:F3} CPU-s") : new string(' ', 28);
         return string.Create(CultureInfo.InvariantCulture,
             $"{name,-20} {build}   cast {timing.Wall,7:F3} s   {rays / timing.Wall / 1e6,7:F2} Mrays/s   {rays / timing.Cpu / 1e6,7:F2} Mrays per CPU-second   {counted} {timing.Count:N0}");
     }
@@ -332,6 +366,8 @@ public static class ThroughputReport
         1 + Math.Sin(theta) * (0.06 * Math.Sin(7 * theta) * Math.Cos(9 * phi) + 0.02 * Math.Sin(23 * theta + 3 * phi));
 
     private readonly record struct Timing(double Wall, double Cpu, long Count);
+
+    private readonly record struct BuildTiming(double Wall, double Cpu);
 
     /// <summary>
     /// Queries for a run of rays, returning how many found a hit and, when <c>answers</c> is not empty, each

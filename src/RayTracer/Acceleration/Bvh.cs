@@ -3,26 +3,25 @@ using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
 using RayTracer.Bounds;
 using RayTracer.Geometry;
+using RayTracer.Kernels;
 using RayTracer.Maths;
 using RayTracer.Tracing;
 
 namespace RayTracer.Acceleration;
 
 /// <summary>
-/// Bounding volume hierarchy built top-down with the binned surface area heuristic (16 bins on each
-/// axis), then collapsed into four-wide nodes whose child boxes are tested together with vector
-/// instructions. Traversal uses a fixed stack on the call stack (no allocation), visits entered
-/// children nearest first and skips subtrees that start beyond the best hit so far.
+/// Bounding volume hierarchy built top-down with the binned surface area heuristic (see
+/// <see cref="BvhBuilder"/>), then collapsed into four-wide nodes whose child boxes are tested together
+/// with vector instructions; leaves of triangles test four of them at once
+/// (<see cref="TriangleGroupSolver"/>). Traversal uses a fixed stack on the call stack (no allocation),
+/// visits entered children nearest first and skips subtrees that start beyond the best hit so far.
 /// </summary>
 public sealed class Bvh : AccelerationStructure
 {
-    private const int BinCount = 16;
     private const int MaxDepth = 60;
 
     // Each wide level pushes at most three entries beyond the one it pops.
     private const int StackSize = 3 * MaxDepth + 8;
-    private const double TraversalCost = 1.0;
-    private const double IntersectionCost = 1.0;
 
     // Rounding slack on far slab distances (pbrt's 1 + 2γ₃) so no ray slips between adjacent boxes.
     private const double FarSlack = 1.0 + 6.0 * 1.1102230246251565e-16;
@@ -32,8 +31,8 @@ public sealed class Bvh : AccelerationStructure
 
     private readonly BvhNode[] _nodes;
     private readonly Bvh4Node[] _wide = [];
-    private readonly int[] _leafOffset = [];
-    private readonly int[] _leafCount = [];
+    private readonly BvhLeaf[] _leaves = [];
+    private readonly TriangleGroup4[] _groups = [];
 
     public Bvh(IReadOnlyList<GeometricObject> objects, int maxLeafSize = 4)
         : base(objects)
@@ -47,17 +46,9 @@ public sealed class Bvh : AccelerationStructure
             return;
         }
 
-        var order = new int[n];
-        for (int i = 0; i < n; i++)
-        {
-            order[i] = i;
-        }
-
-        var nodes = new List<BvhNode>(2 * n / Math.Max(1, maxLeafSize) + 1);
-        Build(nodes, order, 0, n, 0);
-        _nodes = [.. nodes];
-        Table.Permute(order);
+        _nodes = BvhBuilder.Build(Table.Bounds, maxLeafSize, MaxDepth, out var order, out int binaryNodes);
         Table.ReleaseBuildData();
+        Table.Permute(order);
 
         // Collapse pairs of levels into four-wide nodes for traversal.
         var wide = new List<Bvh4Node>(_nodes.Length / 3 + 1);
@@ -65,9 +56,9 @@ public sealed class Bvh : AccelerationStructure
         var leafCounts = new List<int>();
         Collapse(0, wide, leafOffsets, leafCounts);
         _wide = [.. wide];
-        _leafOffset = [.. leafOffsets];
-        _leafCount = [.. leafCounts];
-        BinaryNodeCount = _nodes.Length;
+        _leaves = DescribeLeaves(leafOffsets, leafCounts, out int groupCount);
+        _groups = FillGroups(_leaves, groupCount);
+        BinaryNodeCount = binaryNodes;
         _nodes = [];
     }
 
@@ -89,6 +80,9 @@ public sealed class Bvh : AccelerationStructure
 
         var r = new WideRay(ray);
         var nodes = _wide;
+        var leaves = _leaves;
+        var groups = _groups;
+        var lanes = new TriangleGroupSolver.RayLanes(ray);
         var table = Table;
         Span<int> stackRef = stackalloc int[StackSize];
         Span<double> stackEnter = stackalloc double[StackSize];
@@ -154,9 +148,33 @@ public sealed class Bvh : AccelerationStructure
                     break;
                 }
 
-                int leaf = ~reference;
-                int first = _leafOffset[leaf], end = first + _leafCount[leaf];
-                for (int i = first; i < end; i++)
+                ref var leaf = ref leaves[~reference];
+                if (leaf.Group >= 0)
+                {
+                    for (int g = 0; g < leaf.GroupCount; g++)
+                    {
+                        var tMax = Vector256.Create(t);
+                        var tv = TriangleGroupSolver.Distances(lanes, ref groups[leaf.Group + g], tMax);
+                        int found = (int)Vector256.LessThan(tv, tMax).ExtractMostSignificantBits();
+                        while (found != 0)
+                        {
+                            // Lanes in index order with a strict test: ties go to the lower index, as in the scalar loop.
+                            int lane = BitOperations.TrailingZeroCount(found);
+                            found &= found - 1;
+                            double ti = tv.GetElement(lane);
+                            if (ti < t)
+                            {
+                                t = ti;
+                                primitive = leaf.First + 4 * g + lane;
+                                hit = true;
+                            }
+                        }
+                    }
+
+                    continue;
+                }
+
+                for (int i = leaf.First, end = leaf.First + leaf.Count; i < end; i++)
                 {
                     double ti = table.Distance(i, ray, t);
                     if (ti < t)
@@ -180,7 +198,11 @@ public sealed class Bvh : AccelerationStructure
 
         var r = new WideRay(ray);
         var nodes = _wide;
+        var leaves = _leaves;
+        var groups = _groups;
+        var lanes = new TriangleGroupSolver.RayLanes(ray);
         var table = Table;
+        var tMaxLanes = Vector256.Create(tMax);
         Span<int> stackRef = stackalloc int[StackSize];
         int sp = 0;
         stackRef[sp++] = 0;
@@ -190,9 +212,21 @@ public sealed class Bvh : AccelerationStructure
             int reference = stackRef[--sp];
             if (reference < 0)
             {
-                int leaf = ~reference;
-                int first = _leafOffset[leaf], end = first + _leafCount[leaf];
-                for (int i = first; i < end; i++)
+                ref var leaf = ref leaves[~reference];
+                if (leaf.Group >= 0 && leaf.GroupsCastShadows)
+                {
+                    for (int g = 0; g < leaf.GroupCount; g++)
+                    {
+                        if (Vector256.LessThanAny(TriangleGroupSolver.Distances(lanes, ref groups[leaf.Group + g], tMaxLanes), tMaxLanes))
+                        {
+                            return true;
+                        }
+                    }
+
+                    continue;
+                }
+
+                for (int i = leaf.First, end = leaf.First + leaf.Count; i < end; i++)
                 {
                     if (table.Occludes(i, ray, tMax))
                     {
@@ -217,9 +251,74 @@ public sealed class Bvh : AccelerationStructure
     }
 
     /// <summary>
+    /// The leaves, each with its run of four-lane groups when all its primitives are Möller–Trumbore
+    /// triangles; <paramref name="groupCount"/> is the number of groups.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    private BvhLeaf[] DescribeLeaves(List<int> offsets, List<int> counts, out int groupCount)
+    {
+        var leaves = new BvhLeaf[offsets.Count];
+        groupCount = 0;
+        for (int l = 0; l < leaves.Length; l++)
+        {
+            int first = offsets[l], count = counts[l];
+            leaves[l] = new BvhLeaf { First = first, Count = count, Group = -1 };
+            bool triangles = true, castShadows = true;
+            for (int i = first; i < first + count; i++)
+            {
+                triangles &= Table.IsMollerTrumbore(i);
+                castShadows &= Table.CastsShadows(i);
+            }
+
+            if (triangles)
+            {
+                leaves[l].Group = groupCount;
+                leaves[l].GroupCount = (count + 3) / 4;
+                leaves[l].GroupsCastShadows = castShadows;
+                groupCount += leaves[l].GroupCount;
+            }
+        }
+
+        return leaves;
+    }
+
+    /// <summary>Copies the leaves' triangles into their groups, lane by lane; lanes left over stay zero and never hit.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    private TriangleGroup4[] FillGroups(BvhLeaf[] leaves, int groupCount)
+    {
+        var groups = new TriangleGroup4[groupCount];
+        const int LeavesPerTask = 4096;
+        ChunkedLoop.For(leaves.Length, LeavesPerTask, (start, end) =>
+        {
+            for (int l = start; l < end; l++)
+            {
+                var leaf = leaves[l];
+                for (int k = 0; leaf.Group >= 0 && k < leaf.Count; k++)
+                {
+                    ref var group = ref groups[leaf.Group + k / 4];
+                    ref readonly var tri = ref Table.Packed(leaf.First + k);
+                    int lane = k % 4;
+                    SetLane(ref group.V0, lane, tri.V0.x, tri.V0.y, tri.V0.z);
+                    SetLane(ref group.E1, lane, tri.E1.x, tri.E1.y, tri.E1.z);
+                    SetLane(ref group.E2, lane, tri.E2.x, tri.E2.y, tri.E2.z);
+                }
+            }
+        });
+        return groups;
+    }
+
+    private static void SetLane(ref Vector3x4 v, int lane, double x, double y, double z)
+    {
+        v.x = v.x.WithElement(lane, x);
+        v.y = v.y.WithElement(lane, y);
+        v.z = v.z.WithElement(lane, z);
+    }
+
+    /// <summary>
     /// Turns the binary subtree at <paramref name="binary"/> into a four-wide node: its children are
     /// opened, largest surface area first, until there are four slots or only leaves remain.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private int Collapse(int binary, List<Bvh4Node> wide, List<int> leafOffsets, List<int> leafCounts)
     {
         Span<int> slots = stackalloc int[4];
@@ -231,8 +330,8 @@ public sealed class Bvh : AccelerationStructure
         }
         else
         {
-            slots[count++] = binary + 1;
             slots[count++] = root.Offset;
+            slots[count++] = root.Offset + 1;
             while (count < 4)
             {
                 int best = -1;
@@ -253,8 +352,8 @@ public sealed class Bvh : AccelerationStructure
                 }
 
                 int opened = slots[best];
-                slots[best] = opened + 1;
-                slots[count++] = _nodes[opened].Offset;
+                slots[best] = _nodes[opened].Offset;
+                slots[count++] = _nodes[opened].Offset + 1;
             }
         }
 
@@ -308,155 +407,6 @@ public sealed class Bvh : AccelerationStructure
         return index;
     }
 
-    /// <summary>Builds the subtree over order[start..end) and returns its node index.</summary>
-    private int Build(List<BvhNode> nodes, int[] order, int start, int end, int depth)
-    {
-        var bounds = Table.Bounds;
-        var centroids = Table.Centroids;
-        BoundingBox box = BoundingBox.Empty, centroidBox = BoundingBox.Empty;
-        for (int i = start; i < end; i++)
-        {
-            box.Include(bounds[order[i]]);
-            centroidBox.Include(centroids[order[i]]);
-        }
-
-        int index = nodes.Count;
-        nodes.Add(new BvhNode { Bounds = box });
-        int count = end - start;
-        int longest = centroidBox.LongestAxis;
-        var extent = centroidBox.Diagonal;
-
-        if (count <= 1 || depth >= MaxDepth || !(extent[longest] > 0))
-        {
-            if (count > MaxLeafSize && depth < MaxDepth && count > 1)
-            {
-                // All centroids coincide: split the range in half to keep leaves small.
-                int half = start + count / 2;
-                return MakeInterior(nodes, order, index, start, half, end, depth, longest, box);
-            }
-
-            return MakeLeaf(nodes, index, start, count, box);
-        }
-
-        // Binned SAH on every axis with a spread of centroids; the cheapest plane wins.
-        double bestCost = double.PositiveInfinity;
-        int bestAxis = longest, bestBin = 1;
-        for (int axis = 0; axis < 3; axis++)
-        {
-            if (extent[axis] > 0)
-            {
-                double cost = EvaluateSah(order, start, end, axis, centroidBox.Min[axis], centroidBox.Max[axis], out int bin);
-                if (cost < bestCost)
-                {
-                    bestCost = cost;
-                    bestAxis = axis;
-                    bestBin = bin;
-                }
-            }
-        }
-
-        double splitCost = TraversalCost + IntersectionCost * bestCost / Math.Max(box.SurfaceArea, double.Epsilon);
-        if (splitCost >= IntersectionCost * count && count <= MaxLeafSize)
-        {
-            return MakeLeaf(nodes, index, start, count, box);
-        }
-
-        int mid = Partition(order, start, end, bestAxis, centroidBox.Min[bestAxis], centroidBox.Max[bestAxis], bestBin);
-        return MakeInterior(nodes, order, index, start, mid, end, depth, bestAxis, box);
-    }
-
-    private int MakeInterior(List<BvhNode> nodes, int[] order, int index, int start, int mid, int end, int depth, int axis, BoundingBox box)
-    {
-        Build(nodes, order, start, mid, depth + 1);
-        int second = Build(nodes, order, mid, end, depth + 1);
-        nodes[index] = new BvhNode { Bounds = box, Offset = second, Count = 0, Axis = axis };
-        return index;
-    }
-
-    private static int MakeLeaf(List<BvhNode> nodes, int index, int start, int count, BoundingBox box)
-    {
-        nodes[index] = new BvhNode { Bounds = box, Offset = start, Count = count };
-        return index;
-    }
-
-    /// <summary>Bins centroids along one axis and returns the cheapest SAH cost (area-weighted counts) and its bin boundary.</summary>
-    private double EvaluateSah(int[] order, int start, int end, int axis, double lo, double hi, out int bestSplit)
-    {
-        var bounds = Table.Bounds;
-        var centroids = Table.Centroids;
-        Span<int> binCounts = stackalloc int[BinCount];
-        Span<BoundingBox> binBounds = stackalloc BoundingBox[BinCount];
-        binCounts.Clear();
-        binBounds.Fill(BoundingBox.Empty);
-
-        double scale = BinCount * (1 - 1e-9) / (hi - lo);
-        for (int i = start; i < end; i++)
-        {
-            int b = BinOf(centroids[order[i]][axis], lo, scale);
-            binCounts[b]++;
-            binBounds[b].Include(bounds[order[i]]);
-        }
-
-        // Sweep from the right to get the area and count of every right-hand side.
-        Span<double> rightArea = stackalloc double[BinCount];
-        Span<int> rightCount = stackalloc int[BinCount];
-        var acc = BoundingBox.Empty;
-        int accCount = 0;
-        for (int b = BinCount - 1; b > 0; b--)
-        {
-            acc.Include(binBounds[b]);
-            accCount += binCounts[b];
-            rightArea[b] = acc.SurfaceArea;
-            rightCount[b] = accCount;
-        }
-
-        double bestCost = double.PositiveInfinity;
-        bestSplit = 1;
-        acc = BoundingBox.Empty;
-        accCount = 0;
-        for (int b = 1; b < BinCount; b++)
-        {
-            acc.Include(binBounds[b - 1]);
-            accCount += binCounts[b - 1];
-            if (accCount == 0 || rightCount[b] == 0)
-            {
-                continue;
-            }
-
-            double cost = acc.SurfaceArea * accCount + rightArea[b] * rightCount[b];
-            if (cost < bestCost)
-            {
-                bestCost = cost;
-                bestSplit = b;
-            }
-        }
-
-        return bestCost;
-    }
-
-    /// <summary>Moves primitives whose centroid bins below <paramref name="split"/> to the front; returns the boundary.</summary>
-    private int Partition(int[] order, int start, int end, int axis, double lo, double hi, int split)
-    {
-        var centroids = Table.Centroids;
-        double scale = BinCount * (1 - 1e-9) / (hi - lo);
-        int left = start, right = end - 1;
-        while (left <= right)
-        {
-            if (BinOf(centroids[order[left]][axis], lo, scale) < split)
-            {
-                left++;
-            }
-            else
-            {
-                (order[left], order[right]) = (order[right], order[left]);
-                right--;
-            }
-        }
-
-        // Both sides are non-empty when the split came from the SAH sweep; guard anyway.
-        return left == start || left == end ? start + (end - start) / 2 : left;
-    }
-
     /// <summary>Ray broadcast into vectors for testing four boxes at once.</summary>
     private readonly struct WideRay
     {
@@ -499,8 +449,4 @@ public sealed class Bvh : AccelerationStructure
         /// </summary>
         private static double Reciprocal(double d) => d != 0 ? 1.0 / d : Math.CopySign(1e300, d);
     }
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static int BinOf(double c, double lo, double scale) =>
-        Math.Clamp((int)((c - lo) * scale), 0, BinCount - 1);
 }

@@ -3,13 +3,13 @@ using RayTracer.Bounds;
 namespace RayTracer.Acceleration;
 
 /// <summary>
-/// Flattened BVH node in depth-first order: an interior node's first child follows it directly and
-/// <see cref="Offset"/> is the second child; a leaf (Count &gt; 0) covers primitives [Offset, Offset + Count).
+/// Node of the binary SAH tree. An interior node (Count = 0) has its two children at Offset and
+/// Offset + 1, allocated together so that subtrees can be built in parallel; a leaf (Count &gt; 0)
+/// covers primitives [Offset, Offset + Count) of the build order.
 /// </summary>
 internal struct BvhNode
 {
     public BoundingBox Bounds;
     public int Offset;
     public int Count;
-    public int Axis;
 }

@@ -24,6 +24,7 @@ internal sealed class PrimitiveTable
     private PrimitiveKind[] _kind;
     private bool[] _castsShadows;
 
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     public PrimitiveTable(IReadOnlyList<GeometricObject> objects)
     {
         ArgumentNullException.ThrowIfNull(objects);
@@ -123,6 +124,14 @@ internal sealed class PrimitiveTable
         _castsShadows = Gather(_castsShadows, order);
     }
 
+    /// <summary>Whether primitive i is a triangle tested with Möller–Trumbore, so it can join a four-lane group.</summary>
+    public bool IsMollerTrumbore(int i) => _kind[i] == PrimitiveKind.MollerTrumbore;
+
+    /// <summary>The packed form of a triangle for which <see cref="IsMollerTrumbore"/> holds.</summary>
+    public ref readonly PackedTriangle Packed(int i) => ref _triangles[i];
+
+    public bool CastsShadows(int i) => _castsShadows[i];
+
     public void ReleaseBuildData()
     {
         Bounds = [];
@@ -210,6 +219,7 @@ internal sealed class PrimitiveTable
         return false;
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private static T[] Gather<T>(T[] source, int[] order)
     {
         if (source.Length == 0)
@@ -218,11 +228,12 @@ internal sealed class PrimitiveTable
         }
 
         var result = new T[order.Length];
-        for (int i = 0; i < order.Length; i++)
+        const int PerTask = 1 << 16;
+        ChunkedLoop.For(order.Length, PerTask, (start, end) =>
         {
-            result[i] = source[order[i]];
-        }
-
+            for (int i = start; i < end; i++)
+                result[i] = source[order[i]];
+        });
         return result;
     }
 }

@@ -54,6 +54,25 @@ public class ThroughputReport_Output
             Assert.Contains(lines, l => l.StartsWith("Embree", StringComparison.Ordinal) && l.Contains("skipped", StringComparison.Ordinal));
     }
 
+    [EmbreeFact]
+    public void With_embree_the_report_ends_with_the_primary_shadow_and_build_ratios()
+    {
+        var output = new StringWriter();
+        ThroughputReport.Run(output, 2000, 32, 24, 1);
+        string[] lines = output.ToString().Split('\n', StringSplitOptions.RemoveEmptyEntries);
+        int at = Array.FindIndex(lines, l => l.StartsWith("ratios, SAH BVH against Embree", StringComparison.Ordinal));
+        Assert.True(at >= 0, output.ToString());
+        Assert.Equal(at + 4, lines.Length);
+        string[] names = ["primary rays (rtcIntersect1)", "shadow rays (rtcOccluded1)", "build time"];
+        for (int k = 0; k < 3; k++)
+        {
+            string line = lines[at + 1 + k].Trim();
+            Assert.StartsWith(names[k], line, StringComparison.Ordinal);
+            double ratio = double.Parse(line[names[k].Length..].TrimStart().Split(' ')[0], System.Globalization.CultureInfo.InvariantCulture);
+            Assert.True(ratio > 0 && double.IsFinite(ratio), line);
+        }
+    }
+
     [Fact]
     public void Shadow_rays_start_at_the_primary_hits_and_are_counted_as_occluded()
     {

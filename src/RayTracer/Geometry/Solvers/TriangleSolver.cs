@@ -6,7 +6,9 @@ namespace RayTracer.Geometry.Solvers;
 
 /// <summary>
 /// Möller–Trumbore ray–triangle test, shared by stand-alone triangles, mesh triangles and the
-/// acceleration structures' triangle fast path so that all of them report bit-identical t.
+/// acceleration structures so that all of them report bit-identical t. Its terms are generated from
+/// the GMacDSL macro MollerTrumboreTerms, as are those of the four-lane test
+/// (<see cref="Kernels.TriangleGroupSolver"/>): the same operations in the same order.
 /// </summary>
 public static class TriangleSolver
 {
@@ -20,11 +22,31 @@ public static class TriangleSolver
         out double t, out double beta, out double gamma)
     {
         TriangleTestCounters.MollerTrumbore.Increment();
-        // p = d × e2
-        double px = ray.d.y * e2.z - ray.d.z * e2.y;
-        double py = ray.d.z * e2.x - ray.d.x * e2.z;
-        double pz = ray.d.x * e2.y - ray.d.y * e2.x;
-        double det = e1.x * px + e1.y * py + e1.z * pz;
+        var d = ray.d;
+        var s = ray.o - v0;
+        double det, bn, gn, tn;
+
+        #region GMac : MollerTrumboreTerms
+        //GMac.Bind("d", "Vector3D", d);
+        //GMac.Bind("s", "Vector3D", s);
+        //GMac.Bind("e1", "Vector3D", e1);
+        //GMac.Bind("e2", "Vector3D", e2);
+        //GMac.Bind("det.1", "<det>");
+        //GMac.Bind("bn.1", "<bn>");
+        //GMac.Bind("gn.1", "<gn>");
+        //GMac.Bind("tn.1", "<tn>");
+        double tmp0 = d.x * e2.y - d.y * e2.x;
+        double tmp1 = d.x * e2.z - d.z * e2.x;
+        double tmp2 = d.y * e2.z - e2.y * d.z;
+        double tmp3 = s.x * e1.y - s.y * e1.x;
+        double tmp4 = s.x * e1.z - s.z * e1.x;
+        double tmp5 = s.y * e1.z - s.z * e1.y;
+        det = tmp0 * e1.z + tmp2 * e1.x - tmp1 * e1.y;
+        bn = tmp0 * s.z + tmp2 * s.x - tmp1 * s.y;
+        gn = tmp3 * d.z + tmp5 * d.x - tmp4 * d.y;
+        tn = tmp3 * e2.z + tmp5 * e2.x - tmp4 * e2.y;
+        #endregion
+
         t = beta = gamma = 0;
         if (det == 0)
         {
@@ -32,24 +54,14 @@ public static class TriangleSolver
         }
 
         double inv = 1.0 / det;
-        double sx = ray.o.x - v0.x, sy = ray.o.y - v0.y, sz = ray.o.z - v0.z;
-        beta = (sx * px + sy * py + sz * pz) * inv;
-        if (beta < 0 || beta > 1)
+        beta = bn * inv;
+        gamma = gn * inv;
+        if (beta < 0 || beta > 1 || gamma < 0 || beta + gamma > 1)
         {
             return false;
         }
 
-        // q = s × e1
-        double qx = sy * e1.z - sz * e1.y;
-        double qy = sz * e1.x - sx * e1.z;
-        double qz = sx * e1.y - sy * e1.x;
-        gamma = (ray.d.x * qx + ray.d.y * qy + ray.d.z * qz) * inv;
-        if (gamma < 0 || beta + gamma > 1)
-        {
-            return false;
-        }
-
-        t = (e2.x * qx + e2.y * qy + e2.z * qz) * inv;
+        t = tn * inv;
         return t > ray.tMin && t < tMax;
     }
 
@@ -61,33 +73,44 @@ public static class TriangleSolver
     public static double Distance(in Ray ray, in Point3D v0, in Vector3D e1, in Vector3D e2, double tMax)
     {
         TriangleTestCounters.MollerTrumbore.Increment();
-        double px = ray.d.y * e2.z - ray.d.z * e2.y;
-        double py = ray.d.z * e2.x - ray.d.x * e2.z;
-        double pz = ray.d.x * e2.y - ray.d.y * e2.x;
-        double det = e1.x * px + e1.y * py + e1.z * pz;
+        var d = ray.d;
+        var s = ray.o - v0;
+        double det, bn, gn, tn;
+
+        #region GMac : MollerTrumboreTerms
+        //GMac.Bind("d", "Vector3D", d);
+        //GMac.Bind("s", "Vector3D", s);
+        //GMac.Bind("e1", "Vector3D", e1);
+        //GMac.Bind("e2", "Vector3D", e2);
+        //GMac.Bind("det.1", "<det>");
+        //GMac.Bind("bn.1", "<bn>");
+        //GMac.Bind("gn.1", "<gn>");
+        //GMac.Bind("tn.1", "<tn>");
+        double tmp0 = d.x * e2.y - d.y * e2.x;
+        double tmp1 = d.x * e2.z - d.z * e2.x;
+        double tmp2 = d.y * e2.z - e2.y * d.z;
+        double tmp3 = s.x * e1.y - s.y * e1.x;
+        double tmp4 = s.x * e1.z - s.z * e1.x;
+        double tmp5 = s.y * e1.z - s.z * e1.y;
+        det = tmp0 * e1.z + tmp2 * e1.x - tmp1 * e1.y;
+        bn = tmp0 * s.z + tmp2 * s.x - tmp1 * s.y;
+        gn = tmp3 * d.z + tmp5 * d.x - tmp4 * d.y;
+        tn = tmp3 * e2.z + tmp5 * e2.x - tmp4 * e2.y;
+        #endregion
+
         if (det == 0)
         {
             return double.PositiveInfinity;
         }
 
         double inv = 1.0 / det;
-        double sx = ray.o.x - v0.x, sy = ray.o.y - v0.y, sz = ray.o.z - v0.z;
-        double beta = (sx * px + sy * py + sz * pz) * inv;
-        if (beta < 0 || beta > 1)
+        double beta = bn * inv, gamma = gn * inv;
+        if (beta < 0 || beta > 1 || gamma < 0 || beta + gamma > 1)
         {
             return double.PositiveInfinity;
         }
 
-        double qx = sy * e1.z - sz * e1.y;
-        double qy = sz * e1.x - sx * e1.z;
-        double qz = sx * e1.y - sy * e1.x;
-        double gamma = (ray.d.x * qx + ray.d.y * qy + ray.d.z * qz) * inv;
-        if (gamma < 0 || beta + gamma > 1)
-        {
-            return double.PositiveInfinity;
-        }
-
-        double t = (e2.x * qx + e2.y * qy + e2.z * qz) * inv;
+        double t = tn * inv;
         return t > ray.tMin && t < tMax ? t : double.PositiveInfinity;
     }
 }
