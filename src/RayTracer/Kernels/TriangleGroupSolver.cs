@@ -50,12 +50,12 @@ internal static class TriangleGroupSolver
         //GMac.Bind("bn.1", "<bn>");
         //GMac.Bind("gn.1", "<gn>");
         //GMac.Bind("tn.1", "<tn>");
-        Vector256<double> tmp0 = d.x * e2.y - d.y * e2.x;
-        Vector256<double> tmp1 = d.x * e2.z - d.z * e2.x;
-        Vector256<double> tmp2 = d.y * e2.z - e2.y * d.z;
-        Vector256<double> tmp3 = s.x * e1.y - s.y * e1.x;
-        Vector256<double> tmp4 = s.x * e1.z - s.z * e1.x;
-        Vector256<double> tmp5 = s.y * e1.z - s.z * e1.y;
+        var tmp0 = d.x * e2.y - d.y * e2.x;
+        var tmp1 = d.x * e2.z - d.z * e2.x;
+        var tmp2 = d.y * e2.z - e2.y * d.z;
+        var tmp3 = s.x * e1.y - s.y * e1.x;
+        var tmp4 = s.x * e1.z - s.z * e1.x;
+        var tmp5 = s.y * e1.z - s.z * e1.y;
         det = tmp0 * e1.z + tmp2 * e1.x - tmp1 * e1.y;
         bn = tmp0 * s.z + tmp2 * s.x - tmp1 * s.y;
         gn = tmp3 * d.z + tmp5 * d.x - tmp4 * d.y;
