@@ -66,5 +66,5 @@ public struct Normal3D : ITuple3<Normal3D>
     public override readonly int GetHashCode() => Tuple3.Hash(this);
     public static bool operator ==(Normal3D a, Normal3D b) => a.Equals(b);
     public static bool operator !=(Normal3D a, Normal3D b) => !a.Equals(b);
-    public override readonly string ToString() => Tuple3.Format(this, "<", ">");
+    public override readonly string ToString() => Tuple3.Format(this, "n(", ")");
 }
