@@ -25,12 +25,12 @@ public sealed partial class Multivector<T>
             throw new AlgebraException(Frame.Name,
                 $"the general inverse has closed forms up to {GeneralInverseMaxDimension} dimensions, and this frame has {n}; use inverse(A) for versors and blades.");
         if (IsZero)
-            throw new AlgebraException(Frame.Name, "the zero multivector has no inverse.");
+            throw new AlgebraException(Frame.Name, "the zero multivector has no inverse.") { NotInvertible = true };
         name ??= static m => m;
         var adjugate = Adjugate(n, name);
         var norm = Sp(adjugate).ScalarPart;
         if (T.IsZero(norm))
-            throw new AlgebraException(Frame.Name, "the multivector has no inverse: A times its adjugate is zero.");
+            throw new AlgebraException(Frame.Name, "it has no inverse: A adj(A) is zero, with adj(A) the adjugate made of its involutions.") { NotInvertible = true };
         return adjugate / norm;
     }
 
