@@ -39,12 +39,12 @@ public static class CodeGenerator
         }
         if (request.Join != JoinMode.Split)
         {
-            var evaluated = GenerationProfile.Time("evaluate joined", () => request.Evaluate(null));
+            var evaluated = EvaluateJoined(request, splitFormsExist: candidates.Count > 0);
             // Optimizing a fully expanded block is the slowest step; skip it when it starts far
             // costlier than a form already found (sharing rarely recovers more than that). Lowering
             // stops as soon as the part lowered so far is past that bound.
             var bestSoFar = candidates.Count == 0 ? long.MaxValue : HopelessFactor * (long)candidates.Min(c => c.Block.Statistics().Cost);
-            var joined = GenerationProfile.Time("build joined", () => Build(evaluated, [], request, bestSoFar));
+            var joined = evaluated is null ? null : GenerationProfile.Time("build joined", () => Build(evaluated, [], request, bestSoFar));
             if (joined is not null)
                 candidates.Add((forms.Optimized(joined, "joined"), JoinMode.Joined));
         }
@@ -58,6 +58,22 @@ public static class CodeGenerator
         var alternative = ranked.Skip(1).FirstOrDefault(c => c.Form != best.Form);
         // signs are placed on the kept form alone: that changes no count, so no choice above
         return new CodeGenerationResult(Optimizer.Finish(best.Block), best.Stats, best.Form, alternative.Block is null ? null : alternative.Stats);
+    }
+
+    /// <summary>
+    /// The macro evaluated without names; null when it is too large to expand that way (a general
+    /// inverse in 5D) and the split forms, which name partial results, already stand.
+    /// </summary>
+    private static SymbolicProgram? EvaluateJoined(CodeGenerationRequest request, bool splitFormsExist)
+    {
+        try
+        {
+            return GenerationProfile.Time("evaluate joined", () => request.Evaluate(null));
+        }
+        catch (Exception e) when (splitFormsExist && (e as Algebra.AlgebraException ?? e.InnerException as Algebra.AlgebraException) is { ExceedsLimit: true })
+        {
+            return null;
+        }
     }
 
     /// <summary>

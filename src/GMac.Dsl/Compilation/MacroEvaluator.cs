@@ -314,7 +314,7 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
     }
 
     private static MacroEvaluationException AtSource(SourceSpan span, AlgebraException e) =>
-        new(span, e.Message, e.ExceedsLimit ? DiagnosticCodes.TooLarge : e.NotInvertible ? DiagnosticCodes.GeneratedNotInvertible : null);
+        new(span, e.Message, e.ExceedsLimit ? DiagnosticCodes.TooLarge : e.NotInvertible ? DiagnosticCodes.GeneratedNotInvertible : null, e);
 
     /// <summary>A division, blamed on its own DSL position when the divisor is (symbolically) zero.</summary>
     private static TResult Divide<TResult>(Func<TResult> divide, BoundBinaryOperation b)
