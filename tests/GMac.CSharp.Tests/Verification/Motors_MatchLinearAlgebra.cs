@@ -99,6 +99,35 @@ public sealed class Motors_MatchLinearAlgebra
     }
 
     [Fact]
+    public void Pga_motor_between_lines_is_unit_in_both_parts_of_its_study_number()
+    {
+        // M = s + Σ b e_ij + Σ t e_0i + p e0123 has M M̃ = (s² + |b|²) + 2(s p − (b23 t1 − b13 t2 + b12 t3)) e0123;
+        // a unit motor has 1 and 0 there (points alone do not see the second part).
+        var kernel = MacroKernel.Create("PgaMotorBetweenLines", "double");
+        var r = new Random(37);
+        for (var i = 0; i < Samples; i++)
+        {
+            var inputs = new Dictionary<string, double>();
+            foreach (var name in new[] { "k", "l" })
+            {
+                // a simple line: the moment orthogonal to (b23, −b13, b12), so that b ∧ t = 0
+                var (b, t) = (Point(r), Point(r));
+                double[] w = [b[2], -b[1], b[0]];
+                t = Plus(t, w, -Dot(w, t) / Dot(w, w));
+                (inputs[$"{name}_e1_e2"], inputs[$"{name}_e1_e3"], inputs[$"{name}_e2_e3"]) = (b[0], b[1], b[2]);
+                (inputs[$"{name}_e0_e1"], inputs[$"{name}_e0_e2"], inputs[$"{name}_e0_e3"]) = (t[0], t[1], t[2]);
+            }
+            var o = kernel.Run(inputs);
+            double Get(string key) => o.TryGetValue(key, out var v) ? v : 0;
+            var (sc, p) = (Get("m_s"), Get("m_e0_e1_e2_e3"));
+            double b12 = Get("m_e1_e2"), b13 = Get("m_e1_e3"), b23 = Get("m_e2_e3");
+            double t1 = Get("m_e0_e1"), t2 = Get("m_e0_e2"), t3 = Get("m_e0_e3");
+            Small(sc * sc + b12 * b12 + b13 * b13 + b23 * b23 - 1, "scalar part of M M̃ minus 1");
+            Small(sc * p - (b23 * t1 - b13 * t2 + b12 * t3), "pseudoscalar part of M M̃");
+        }
+    }
+
+    [Fact]
     public void Pga_motor_between_planes_moves_plane_one_onto_plane_two()
     {
         // n·x + d = 0 as n1 e1 + n2 e2 + n3 e3 + d e0.
