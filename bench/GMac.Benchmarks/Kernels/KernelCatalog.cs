@@ -21,6 +21,7 @@ public static class KernelCatalog
         () => new SquaredDistanceKernel(),
         () => new RotateAboutAxisThroughPoint3DKernel(),
         () => new SphereCentreAndRadiusThroughPointsKernel(),
+        () => new InverseKinematicsKernel(),
     ];
 
     public static IReadOnlyList<string> Names { get; } = Factories.Select(f => f().MacroName).ToArray();
