@@ -44,7 +44,7 @@ public static class CodeGenerator
             // costlier than a form already found (sharing rarely recovers more than that). Lowering
             // stops as soon as the part lowered so far is past that bound.
             var bestSoFar = candidates.Count == 0 ? long.MaxValue : HopelessFactor * (long)candidates.Min(c => c.Block.Statistics().Cost);
-            var joined = evaluated is null ? null : GenerationProfile.Time("build joined", () => Build(evaluated, [], request, bestSoFar));
+            var joined = evaluated is null ? null : BuildJoined(evaluated, request, bestSoFar, splitFormsExist: candidates.Count > 0);
             if (joined is not null)
                 candidates.Add((forms.Optimized(joined, "joined"), JoinMode.Joined));
         }
@@ -58,6 +58,19 @@ public static class CodeGenerator
         var alternative = ranked.Skip(1).FirstOrDefault(c => c.Form != best.Form);
         // signs are placed on the kept form alone: that changes no count, so no choice above
         return new CodeGenerationResult(Optimizer.Finish(best.Block), best.Stats, best.Form, alternative.Block is null ? null : alternative.Stats);
+    }
+
+    /// <summary>The joined form built; null when hopeless, or too large to expand while split forms stand.</summary>
+    private static CodeBlock? BuildJoined(SymbolicProgram evaluated, CodeGenerationRequest request, long bestSoFar, bool splitFormsExist)
+    {
+        try
+        {
+            return GenerationProfile.Time("build joined", () => Build(evaluated, [], request, bestSoFar));
+        }
+        catch (Algebra.AlgebraException e) when (splitFormsExist && e.ExceedsLimit)
+        {
+            return null;
+        }
     }
 
     /// <summary>
