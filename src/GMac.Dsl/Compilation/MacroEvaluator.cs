@@ -307,7 +307,8 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
         {
             return evaluate();
         }
-        catch (AlgebraException e)
+        // A size limit stays with the whole statement, where restructuring is suggested.
+        catch (AlgebraException e) when (!e.ExceedsLimit)
         {
             throw AtSource(operation.Span, e);
         }
