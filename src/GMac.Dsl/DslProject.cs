@@ -25,6 +25,19 @@ public sealed class DslProject
     public IReadOnlyList<Diagnostic> Diagnostics { get; }
     public bool HasErrors => Diagnostics.Any(d => d.IsError);
 
+    /// <summary>
+    /// The DSL text at <paramref name="span"/>, its line breaks and indentation folded to single
+    /// spaces and long texts cut at <paramref name="maxLength"/>; null where the span has no text.
+    /// Messages quote it to show an expression as the user wrote it.
+    /// </summary>
+    public string? SourceText(SourceSpan span, int maxLength = 120)
+    {
+        if (span.Length <= 0 || SyntaxTrees.FirstOrDefault(t => t.FilePath == span.FilePath) is not { } tree) return null;
+        if (span.Start < 0 || span.Start + span.Length > tree.Text.Length) return null;
+        var text = string.Join(' ', tree.Text.Substring(span.Start, span.Length).Split((char[]?)null, StringSplitOptions.RemoveEmptyEntries));
+        return text.Length <= maxLength ? text : text[..(maxLength - 1)] + "…";
+    }
+
     /// <summary>Wall time of parsing and binding, without reading the files.</summary>
     public TimeSpan ParseAndBindTime { get; }
 

@@ -23,6 +23,7 @@ public static class KernelCatalog
         () => new SphereCentreAndRadiusThroughPointsKernel(),
         () => new LineThroughPointsKernel(),
         () => new CircleThroughPointsKernel(),
+        () => new InverseKinematicsKernel(),
     ];
 
     public static IReadOnlyList<string> Names { get; } = Factories.Select(f => f().MacroName).ToArray();

@@ -12,6 +12,9 @@ public sealed class AlgebraException : Exception
     /// <summary>True when the operation was refused for its size rather than for its meaning.</summary>
     public bool ExceedsLimit { get; init; }
 
+    /// <summary>True when a multivector to invert has no inverse (a null versor, A adj(A) = 0).</summary>
+    public bool NotInvertible { get; init; }
+
     public AlgebraException(string? frameName, string message)
         : base(frameName is null ? message : $"Frame '{frameName}': {message}")
     {

@@ -116,18 +116,18 @@ public sealed partial class Multivector<T>
     public Multivector<T> Inverse()
     {
         if (IsZero)
-            throw new AlgebraException(Frame.Name, "the zero multivector has no inverse.");
+            throw new AlgebraException(Frame.Name, "the zero multivector has no inverse.") { NotInvertible = true };
         var reverse = Reverse();
         if (typeof(T) == typeof(Symbolic.Scalar) && Terms.All(t => ((Symbolic.Scalar)(object)t.Coefficient!).IsConstant))
         {
             var product = Gp(reverse);
             if (product.SelectGrades(g => g != 0).TermCount > 0)
                 throw new AlgebraException(Frame.Name,
-                    $"{this} is not a versor or blade: its product with its reverse is {product}, not a scalar, so Ã/⟨AÃ⟩₀ is not its inverse.");
+                    $"{this} is not a versor or blade: its product with its reverse is {product}, not a scalar, so Ã/⟨AÃ⟩₀ is not its inverse (general_inverse inverts any invertible multivector of up to 5 dimensions).");
         }
         var q = QuasiNorm();
         if (T.IsZero(q))
-            throw new AlgebraException(Frame.Name, $"cannot invert the null versor or blade {this}: its quasi-norm ⟨V Ṽ⟩₀ is zero.");
+            throw new AlgebraException(Frame.Name, "a null versor or blade has no inverse: its quasi-norm ⟨V Ṽ⟩₀ is zero.") { NotInvertible = true };
         return reverse / q;
     }
 

@@ -53,10 +53,10 @@ public static class CodeGenerator
         }
         if (request.Join != JoinMode.Split)
         {
-            SymbolicProgram evaluated;
+            SymbolicProgram? evaluated;
             try
             {
-                evaluated = GenerationProfile.Time("evaluate joined", () => request.Evaluate(null));
+                evaluated = EvaluateJoined(request, splitFormsExist: candidates.Count > 0);
             }
             catch (FormTooLargeException e)
             {
@@ -69,7 +69,7 @@ public static class CodeGenerator
             // costlier than a form already found (sharing rarely recovers more than that). Lowering
             // stops as soon as the part lowered so far is past that bound.
             var bestSoFar = candidates.Count == 0 ? long.MaxValue : HopelessFactor * (long)candidates.Min(c => c.Block.Statistics().Cost);
-            var joined = GenerationProfile.Time("build joined", () => Build(evaluated, [], request, bestSoFar));
+            var joined = evaluated is null ? null : BuildJoined(evaluated, request, bestSoFar, splitFormsExist: candidates.Count > 0);
             if (joined is not null)
             {
                 candidates.Add((forms.Optimized(joined, "joined"), JoinMode.Joined));
@@ -96,6 +96,35 @@ public static class CodeGenerator
         var alternative = ranking.Skip(1).Select(i => ordered[i]).FirstOrDefault(c => c.Form != best.Form);
         // signs are placed on the kept form alone: that changes no count, so no choice above
         return new CodeGenerationResult(Optimizer.Finish(best.Block), best.Stats, best.Form, alternative.Block is null ? null : alternative.Stats);
+    }
+
+    /// <summary>The joined form built; null when hopeless, or too large to expand while split forms stand.</summary>
+    private static CodeBlock? BuildJoined(SymbolicProgram evaluated, CodeGenerationRequest request, long bestSoFar, bool splitFormsExist)
+    {
+        try
+        {
+            return GenerationProfile.Time("build joined", () => Build(evaluated, [], request, bestSoFar));
+        }
+        catch (Algebra.AlgebraException e) when (splitFormsExist && e.ExceedsLimit)
+        {
+            return null;
+        }
+    }
+
+    /// <summary>
+    /// The macro evaluated without names; null when it is too large to expand that way (a general
+    /// inverse in 5D) and the split forms, which name partial results, already stand.
+    /// </summary>
+    private static SymbolicProgram? EvaluateJoined(CodeGenerationRequest request, bool splitFormsExist)
+    {
+        try
+        {
+            return GenerationProfile.Time("evaluate joined", () => request.Evaluate(null));
+        }
+        catch (Exception e) when (splitFormsExist && (e as Algebra.AlgebraException ?? e.InnerException as Algebra.AlgebraException) is { ExceedsLimit: true })
+        {
+            return null;
+        }
     }
 
     /// <summary>

@@ -20,6 +20,7 @@ public sealed class TemporaryRecorder
     private readonly List<(string Name, Scalar Value)> _temporaries = [];
     private readonly Dictionary<Scalar, Scalar> _byValue = new();
     private readonly Dictionary<string, Lazy<Scalar>> _expanded = new(StringComparer.Ordinal);
+    private readonly Dictionary<Scalar, Scalar?> _expandedArguments = new();
     private readonly Func<Scalar, Scalar> _simplify;
 
     public TemporaryRecorder(Func<Scalar, Scalar>? simplify = null, bool statementsOnly = false)
@@ -69,12 +70,32 @@ public sealed class TemporaryRecorder
         {
             var argument = atom.Arguments[0];
             if (!argument.Variables.Any(IsTemporary)) continue;
-            var expanded = _simplify(Expand(argument));
-            if (expanded.Terms.Count >= argument.Terms.Count) continue;
+            if (TryExpand(argument) is not { } expanded || expanded.Terms.Count >= argument.Terms.Count) continue;
             var replacement = atom.Kind == AtomKind.Inverse ? Scalar.Reciprocal(expanded) : Scalar.Sqrt(expanded);
             value = InverseCancellation.ReplaceAtoms(value, new Dictionary<Atom, Scalar> { [atom] = replacement });
         }
         return value;
+    }
+
+    /// <summary>
+    /// The value expanded into the inputs and simplified; null when that expansion is too large to
+    /// form (the norm of a general inverse in 5D is a polynomial of degree 8 in 32 coefficients).
+    /// </summary>
+    private Scalar? TryExpand(Scalar value)
+    {
+        // Every coefficient of A/s divides by the same s: expand it once.
+        if (_expandedArguments.TryGetValue(value, out var known)) return known;
+        Scalar? expanded;
+        try
+        {
+            expanded = _simplify(Expand(value));
+        }
+        catch (AlgebraException e) when (e.ExceedsLimit)
+        {
+            expanded = null;
+        }
+        _expandedArguments[value] = expanded;
+        return expanded;
     }
 
     /// <summary>A constant, or a constant multiple of one variable: naming it would save nothing.</summary>

@@ -112,14 +112,22 @@ internal sealed class ScalarParser
         throw Error($"expected '{c}' {context} but found {found}", _position);
     }
 
+    /// <summary>
+    /// A sum, its terms gathered and combined once: adding them one by one costs quadratic time,
+    /// and a long sum (a cached simplification) would meet the limit on sums built that way.
+    /// </summary>
     private Scalar ParseSum()
     {
-        var result = ParseProduct();
+        var first = ParseProduct();
+        List<Term>? terms = null;
         while (true)
         {
-            if (Accept('+')) result += ParseProduct();
-            else if (Accept('-')) result -= ParseProduct();
-            else return result;
+            var negate = false;
+            if (Accept('+')) { }
+            else if (Accept('-')) negate = true;
+            else return terms is null ? first : Scalar.FromTerms(terms);
+            terms ??= [.. first.Terms];
+            foreach (var t in ParseProduct().Terms) terms.Add(negate ? t with { Coefficient = -t.Coefficient } : t);
         }
     }
 

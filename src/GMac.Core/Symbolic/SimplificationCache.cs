@@ -140,7 +140,9 @@ public sealed class SimplificationCache
                 result = ScalarParser.ParseShared(text);
                 return true;
             }
-            catch (Exception e) when (e is FormatException or ArgumentException or OverflowException or DivideByZeroException)
+            // A value too large to build back term by term (it came from a product) is computed again.
+            catch (Exception e) when (e is FormatException or ArgumentException or OverflowException or DivideByZeroException
+                                          or Algebra.AlgebraException { ExceedsLimit: true })
             {
                 return false;
             }

@@ -7,7 +7,8 @@ namespace GMac.Dsl.Compilation;
 /// statement or expression responsible. <see cref="Descriptor"/> is set when the problem has a code
 /// of its own (division by zero, an operation too large), otherwise the generic one applies.
 /// </summary>
-public sealed class MacroEvaluationException(SourceSpan span, string message, DiagnosticDescriptor? descriptor = null) : Exception(message)
+public sealed class MacroEvaluationException(SourceSpan span, string message, DiagnosticDescriptor? descriptor = null, Exception? inner = null)
+    : Exception(message, inner)
 {
     public SourceSpan Span { get; } = span;
     public DiagnosticDescriptor? Descriptor { get; } = descriptor;

@@ -101,7 +101,7 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
             }
             catch (AlgebraException e)
             {
-                throw new MacroEvaluationException(macro.Statements[i].Span, e.Message, e.ExceedsLimit ? DiagnosticCodes.TooLarge : null);
+                throw AtSource(macro.Statements[i].Span, e);
             }
             catch (DivideByZeroException)
             {
@@ -191,13 +191,16 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
                 return new Value(c.Blade.Sign < 0 ? -coefficient : coefficient, null);
             }
             case BoundUnaryOperation u:
-                return Unary(u, context, frame);
+                return AtOperation(u, () => Unary(u, context, frame));
             case BoundBinaryOperation b:
-                return Binary(b, context, frame);
+                return AtOperation(b, () => Binary(b, context, frame));
             case BoundGradeProjection g:
                 return new Value(T.Zero, Mv(g.Operand, context, frame!).Grade(g.Grade));
             case BoundVersorApplication a:
-                return new Value(T.Zero, Mv(a.Versor, context, frame!).Apply(Mv(a.Operand, context, frame!)));
+            {
+                var (versor, operand) = (Mv(a.Versor, context, frame!), Mv(a.Operand, context, frame!));
+                return AtOperation(a, () => new Value(T.Zero, versor.Apply(operand)));
+            }
             case BoundTransformApplication t:
             {
                 var source = Frames[t.Transform.Source];
@@ -260,6 +263,7 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
             UnaryOperator.GradeInvolution => a.GradeInvolution(),
             UnaryOperator.CliffordConjugate => a.CliffordConjugate(),
             UnaryOperator.Inverse => a.Inverse(),
+            UnaryOperator.GeneralInverse => a.GeneralInverse(context.State is { Joined: false, Observer.Name: { } name } ? name : null),
             UnaryOperator.Dual => a.Dual(),
             UnaryOperator.Undual => a.Undual(),
             UnaryOperator.RightComplement => a.RightComplement(),
@@ -307,6 +311,26 @@ public sealed class MacroEvaluator<T>(CoreFrames frames, IScalarDomain<T> domain
             && IsBladeByStructure(only.Value, macro, depth + 1),
         _ => false,
     };
+
+    /// <summary>
+    /// An operation whose algebra fails (a null versor to invert, an exp it cannot take) is blamed on
+    /// its own DSL expression, the innermost that fails, so the message can quote it as written.
+    /// </summary>
+    private static Value AtOperation(BoundExpression operation, Func<Value> evaluate)
+    {
+        try
+        {
+            return evaluate();
+        }
+        // A size limit stays with the whole statement, where restructuring is suggested.
+        catch (AlgebraException e) when (!e.ExceedsLimit)
+        {
+            throw AtSource(operation.Span, e);
+        }
+    }
+
+    private static MacroEvaluationException AtSource(SourceSpan span, AlgebraException e) =>
+        new(span, e.Message, e.ExceedsLimit ? DiagnosticCodes.TooLarge : e.NotInvertible ? DiagnosticCodes.GeneratedNotInvertible : null, e);
 
     /// <summary>A division, blamed on its own DSL position when the divisor is (symbolically) zero.</summary>
     private static TResult Divide<TResult>(Func<TResult> divide, BoundBinaryOperation b)

@@ -56,6 +56,10 @@ public sealed class DiagnosticBag
             $"'{function}' needs an invertible metric, but frame '{frame}' is degenerate (its pseudoscalar squares to zero); "
             + "use rcomplement(A) (A ∧ rcomplement(A) = I) and lcomplement(A) for duality, and 'vee' for the regressive product (join of points, meet in a dual model)");
 
+    public void ReportGeneralInverseTooLarge(SourceSpan span, string frame, int dimension) =>
+        Report(DiagnosticCodes.GeneralInverseTooLarge, span,
+            $"'general_inverse' has closed forms up to 5 dimensions, but frame '{frame}' has {dimension}; use inverse(A) for a versor or blade");
+
     // ---- frames, transforms, matrices
     public void ReportNotInvertible(SourceSpan span, string name) =>
         Report(DiagnosticCodes.NotInvertible, span, $"transform '{name}' is not invertible, so 'inverse of' cannot be used");

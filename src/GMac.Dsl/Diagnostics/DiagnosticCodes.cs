@@ -49,6 +49,9 @@ public static class DiagnosticCodes
     // ---- output blocks
     public static readonly DiagnosticDescriptor InvalidOutputText = new("GMAC0140", Error, "the text of an output block is not C# statements that can go into a region (a directive, an unclosed comment or string)", ReportedBy.DslLoad);
 
+    // ---- operations
+    public static readonly DiagnosticDescriptor GeneralInverseTooLarge = new("GMAC0155", Error, "general_inverse in a frame of more than 5 dimensions, where it has no closed form", ReportedBy.DslLoad);
+
     // ---- DSL warnings
     public static readonly DiagnosticDescriptor Unused = new("GMAC0201", Warning, "a subspace, constant, transform or temporary is never used", ReportedBy.Check);
     public static readonly DiagnosticDescriptor OutputNeverAssigned = new("GMAC0202", Warning, "a macro never assigns one of its outputs", ReportedBy.Check);
@@ -73,6 +76,7 @@ public static class DiagnosticCodes
     public static readonly DiagnosticDescriptor ConstantOutOfRange = new("GMAC0315", Error, "a constant of the generated code is outside the range of its scalar type (float or double, also as the lanes of a vector type)", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor UnboundInput = new("GMAC0317", Error, "an input is bound by no line, or a coefficient is left out of a grade whose others are bound (write \"0\" to mean zero)", ReportedBy.Generation);
     public static readonly DiagnosticDescriptor OutsideDomain = new("GMAC0320", Error, "exp, log or sqrt of a multivector outside the forms they are defined for (exp: bivectors up to 5D; log and sqrt: rotors and motors whose planes square to ≤ 0)", ReportedBy.Generation);
+    public static readonly DiagnosticDescriptor GeneratedNotInvertible = new("GMAC0325", Error, "the macro inverts a multivector that has no inverse for these bindings (a null versor or blade, or A adj(A) = 0)", ReportedBy.Generation);
 
     // ---- binding points, C# files, verification
     public static readonly DiagnosticDescriptor UnmatchedEndRegion = new("GMAC0401", Error, "#endregion without a matching #region", ReportedBy.SourceFiles);

@@ -56,7 +56,8 @@ public sealed partial class MacroCodeGenerator
         }
         catch (MacroEvaluationException e)
         {
-            errors.Add(Problem(e.Descriptor ?? DiagnosticCodes.CannotGenerate, $"macro '{macroName}' cannot be generated for these bindings: {e.Message}", regionLine, 1) with { Cause = e.Span });
+            var at = _project.SourceText(e.Span) is { } text ? $"in '{text}': " : "";
+            errors.Add(Problem(e.Descriptor ?? DiagnosticCodes.CannotGenerate, $"macro '{macroName}' cannot be generated for these bindings: {at}{e.Message}", regionLine, 1) with { Cause = e.Span });
             return new GenerationOutcome(null, errors, null);
         }
         catch (DivideByZeroException)

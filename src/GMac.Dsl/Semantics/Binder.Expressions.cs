@@ -31,6 +31,7 @@ internal sealed partial class Binder
     {
         ["reverse"] = UnaryOperator.Reverse, ["grade_inv"] = UnaryOperator.GradeInvolution,
         ["cliff_conj"] = UnaryOperator.CliffordConjugate, ["inverse"] = UnaryOperator.Inverse,
+        ["general_inverse"] = UnaryOperator.GeneralInverse,
         ["dual"] = UnaryOperator.Dual, ["undual"] = UnaryOperator.Undual, ["norm"] = UnaryOperator.Norm,
         ["rcomplement"] = UnaryOperator.RightComplement, ["lcomplement"] = UnaryOperator.LeftComplement,
         ["norm2"] = UnaryOperator.Norm2, ["quasi_norm"] = UnaryOperator.QuasiNorm, ["quasi_norm2"] = UnaryOperator.QuasiNorm2,

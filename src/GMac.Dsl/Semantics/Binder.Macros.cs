@@ -350,11 +350,20 @@ internal sealed partial class Binder
                 _diagnostics.ReportNoDual(span, name, frame.Name);
                 return null;
             }
+            if (unary is UnaryOperator.GeneralInverse && n > GMac.Core.Algebra.Multivector<double>.GeneralInverseMaxDimension)
+            {
+                _diagnostics.ReportGeneralInverseTooLarge(span, frame.Name, n);
+                return null;
+            }
             var grades = unary switch
             {
                 UnaryOperator.Norm or UnaryOperator.Norm2 or UnaryOperator.QuasiNorm or UnaryOperator.QuasiNorm2 => 1,
                 UnaryOperator.Dual or UnaryOperator.Undual or UnaryOperator.RightComplement or UnaryOperator.LeftComplement => Enumerable.Range(0, n + 1)
                     .Where(g => (operand.Type.GradeMask & (1 << g)) != 0).Aggregate(0, (m, g) => m | (1 << (n - g))),
+                // The adjugate keeps the even subalgebra and the span of 1 and the vectors; other operands fill every grade.
+                UnaryOperator.GeneralInverse => (operand.Type.GradeMask & ~0b11) == 0 || (operand.Type.GradeMask & 0x2AAAAAAA) == 0
+                    ? operand.Type.GradeMask
+                    : AllGrades(frame),
                 _ => operand.Type.GradeMask,
             };
             return new BoundUnaryOperation(unary, operand, new ExpressionType(frame, grades), span);

@@ -7,6 +7,8 @@ public enum UnaryOperator
     GradeInvolution,
     CliffordConjugate,
     Inverse,
+    /// <summary>adj(A)/⟨A adj(A)⟩₀: the inverse of any invertible multivector of a frame of at most 5 dimensions.</summary>
+    GeneralInverse,
     Dual,
     Undual,
     /// <summary>Right complement: A ∧ rcomplement(A) = I on basis blades, metric independent.</summary>

@@ -47,7 +47,7 @@ public sealed class Generate_CausePositions : IDisposable
         Assert.Equal(1, exit);
         // Line 8 of div.gmac, the division after "w = "; the region is on line 5 of K.cs.
         Assert.Equal(
-            $"{dsl}(8,13): error GMAC0313: macro 'DivZero' cannot be generated for these bindings: division by zero: " +
+            $"{dsl}(8,13): error GMAC0313: macro 'DivZero' cannot be generated for these bindings: in 'x / (x.<e1> - x.<e1>)': division by zero: " +
             $"the divisor simplifies to zero for these bindings (binding point at {code}(5,1))",
             err.Trim());
         Assert.Equal(text, File.ReadAllText(code));

@@ -1,6 +1,7 @@
 using GMac.Core.Algebra;
 using GMac.Core.Symbolic;
 using GMac.Dsl.Compilation;
+using GMac.Dsl.Diagnostics;
 using GMac.Dsl.Semantics;
 using GMac.Dsl.Tests.Support;
 
@@ -53,6 +54,9 @@ public sealed class MacroCompiler_AgreesWithNumeric
                 {
                     var blade = new BasisBlade(id);
                     var (e, a) = (expected[blade], actual[blade]);
+                    // Random inputs can leave a macro's domain (two trivectors that are no lines have no motor):
+                    // both evaluations are then NaN, which is agreement.
+                    if (double.IsNaN(e) && double.IsNaN(a)) continue;
                     Assert.True(Math.Abs(e - a) <= tolerance * (1 + Math.Abs(e)),
                         $"{macroName}.{output.Name} on {expected.Frame.BladeName(blade)}: numeric {e}, symbolic {a}");
                 }

@@ -42,6 +42,10 @@ public sealed class Binder_Types
     [InlineData("cast_to_class(u gp b, e3d.Bivector)", new[] { 2 })]
     [InlineData("apply(u, b)", new[] { 2 })]
     [InlineData("2 * u + s", new[] { 0, 1 })]
+    [InlineData("general_inverse(u)", new[] { 1 })]
+    [InlineData("general_inverse(s + u)", new[] { 0, 1 })]
+    [InlineData("general_inverse(s + b)", new[] { 0, 2 })]
+    [InlineData("general_inverse(u + b)", new[] { 0, 1, 2, 3 })]
     public void Expression_has_the_grades_of_its_operation(string expression, int[] grades)
     {
         var type = TypeOf(expression);
