@@ -21,6 +21,9 @@ public static class VectorKernelCatalog
         ["SquaredDistance"] = () => new SquaredDistanceVectorKernel(),
         ["RotateAboutAxisThroughPoint3D"] = () => new RotateAboutAxisThroughPoint3DVectorKernel(),
         ["SphereCentreAndRadiusThroughPoints"] = () => new SphereCentreAndRadiusThroughPointsVectorKernel(),
+        ["LineThroughPoints"] = () => new LineThroughPointsVectorKernel(),
+        ["CircleThroughPoints"] = () => new CircleThroughPointsVectorKernel(),
+        ["InverseKinematics"] = () => new InverseKinematicsVectorKernel(),
     };
 
     /// <summary>One per kernel of <see cref="KernelCatalog"/>, in its order; a kernel without a vector form is an error.</summary>

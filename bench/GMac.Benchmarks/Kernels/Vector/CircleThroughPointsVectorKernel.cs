@@ -1,0 +1,267 @@
+using System.Runtime.Intrinsics;
+
+namespace GMac.Benchmarks.Kernels.Vector;
+
+/// <summary>CircleThroughPoints over columns: its binding point as a batch in Vector256 and Vector512.</summary>
+public sealed partial class CircleThroughPointsVectorKernel() : VectorKernel(new CircleThroughPointsKernel())
+{
+    protected override void Generated256(double[][] i, double[][] o)
+    {
+        Vec3Columns P = new(i, 0);
+        Vec3Columns Q = new(i, 3);
+        Vec3Columns R = new(i, 6);
+        double[] c0 = o[0], c1 = o[1], c2 = o[2], c3 = o[3], c4 = o[4], c5 = o[5], c6 = o[6], c7 = o[7], c8 = o[8], c9 = o[9];
+        #region GMac : CircleThroughPoints
+        //GMac.Type("Vector256<double>");
+        //GMac.Batch("k");
+        //GMac.Bind("p1", "ConformalPoint3D", "P[k]");
+        //GMac.Bind("p2", "ConformalPoint3D", "Q[k]");
+        //GMac.Bind("p3", "ConformalPoint3D", "R[k]");
+        //GMac.Bind("phi.no^e1^e2", "<c0[k]>");
+        //GMac.Bind("phi.no^e1^e3", "<c1[k]>");
+        //GMac.Bind("phi.no^e2^e3", "<c2[k]>");
+        //GMac.Bind("phi.e1^e2^e3", "<c3[k]>");
+        //GMac.Bind("phi.no^e1^ni", "<c4[k]>");
+        //GMac.Bind("phi.no^e2^ni", "<c5[k]>");
+        //GMac.Bind("phi.no^e3^ni", "<c6[k]>");
+        //GMac.Bind("phi.e1^e2^ni", "<c7[k]>");
+        //GMac.Bind("phi.e1^e3^ni", "<c8[k]>");
+        //GMac.Bind("phi.e2^e3^ni", "<c9[k]>");
+        int count0 = P.x.Length;
+        if (P.y.Length != count0 || P.z.Length != count0 || Q.x.Length != count0 || Q.y.Length != count0 || Q.z.Length != count0 || R.x.Length != count0 || R.y.Length != count0 || R.z.Length != count0 || c0.Length != count0 || c1.Length != count0 || c2.Length != count0 || c3.Length != count0 || c4.Length != count0 || c5.Length != count0 || c6.Length != count0 || c7.Length != count0 || c8.Length != count0 || c9.Length != count0) throw new global::System.ArgumentException("CircleThroughPoints: the spans of a batch must have one length, that of P.x: P.y, P.z, Q.x, Q.y, Q.z, R.x, R.y, R.z, c0, c1, c2, c3, c4, c5, c6, c7, c8, c9");
+        ref double span0 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P.x);
+        ref double span1 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P.y);
+        ref double span2 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P.z);
+        ref double span3 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)Q.x);
+        ref double span4 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)Q.y);
+        ref double span5 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)Q.z);
+        ref double span6 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)R.x);
+        ref double span7 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)R.y);
+        ref double span8 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)R.z);
+        ref double span9 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)c0);
+        ref double span10 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)c1);
+        ref double span11 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)c2);
+        ref double span12 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)c3);
+        ref double span13 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)c4);
+        ref double span14 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)c5);
+        ref double span15 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)c6);
+        ref double span16 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)c7);
+        ref double span17 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)c8);
+        ref double span18 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)c9);
+        var tmpC0 = Vector256.Create(2.0);
+        var tmpC1 = Vector256.Create(0.5);
+        int k = 0;
+        for (; k <= count0 - Vector256<double>.Count; k += Vector256<double>.Count)
+        {
+            var item0 = Vector256.LoadUnsafe(ref span0, (nuint)k);
+            var item1 = Vector256.LoadUnsafe(ref span1, (nuint)k);
+            var item2 = Vector256.LoadUnsafe(ref span2, (nuint)k);
+            var item3 = Vector256.LoadUnsafe(ref span3, (nuint)k);
+            var item4 = Vector256.LoadUnsafe(ref span4, (nuint)k);
+            var item5 = Vector256.LoadUnsafe(ref span5, (nuint)k);
+            var item6 = Vector256.LoadUnsafe(ref span6, (nuint)k);
+            var item7 = Vector256.LoadUnsafe(ref span7, (nuint)k);
+            var item8 = Vector256.LoadUnsafe(ref span8, (nuint)k);
+            var tmp0 = item6 - item0;
+            var tmp1 = item7 - item1;
+            var tmp2 = item8 - item2;
+            var tmp3 = tmpC0 * item2;
+            var tmp4 = tmpC0 * item1;
+            var tmp5 = tmpC0 * item0;
+            var tmp6 = tmpC1 * (tmp0 * (tmp5 + tmp0) + tmp1 * (tmp4 + tmp1) + tmp2 * (tmp3 + tmp2));
+            var tmp7 = item3 - item0;
+            var tmp8 = item4 - item1;
+            var tmp9 = item5 - item2;
+            var tmp10 = tmpC1 * (tmp7 * (tmp5 + tmp7) + tmp8 * (tmp4 + tmp8) + tmp9 * (tmp3 + tmp9));
+            var tmp11 = tmp1 * tmp7 - tmp0 * tmp8;
+            var tmp12 = tmp2 * tmp7 - tmp0 * tmp9;
+            var tmp13 = tmp2 * tmp8 - tmp1 * tmp9;
+            var tmp14 = tmp6 * tmp7 - tmp0 * tmp10;
+            var tmp15 = tmp6 * tmp8 - tmp1 * tmp10;
+            var tmp16 = tmp6 * tmp9 - tmp2 * tmp10;
+            var result0 = tmp11;
+            var result1 = tmp12;
+            var result2 = tmp13;
+            var result3 = tmp13 * item0 + tmp11 * item2 - tmp12 * item1;
+            var result4 = tmp14;
+            var result5 = tmp15;
+            var result6 = tmp16;
+            var tmp17 = tmpC1 * (item2 * item2 + item1 * item1 + item0 * item0);
+            var result7 = tmp11 * tmp17 + tmp15 * item0 - tmp14 * item1;
+            var result8 = tmp12 * tmp17 + tmp16 * item0 - tmp14 * item2;
+            var result9 = tmp13 * tmp17 + tmp16 * item1 - tmp15 * item2;
+            result0.StoreUnsafe(ref span9, (nuint)k);
+            result1.StoreUnsafe(ref span10, (nuint)k);
+            result2.StoreUnsafe(ref span11, (nuint)k);
+            result3.StoreUnsafe(ref span12, (nuint)k);
+            result4.StoreUnsafe(ref span13, (nuint)k);
+            result5.StoreUnsafe(ref span14, (nuint)k);
+            result6.StoreUnsafe(ref span15, (nuint)k);
+            result7.StoreUnsafe(ref span16, (nuint)k);
+            result8.StoreUnsafe(ref span17, (nuint)k);
+            result9.StoreUnsafe(ref span18, (nuint)k);
+        }
+        for (; k < count0; k++)
+        {
+            double tmp0 = R.x[k] - P.x[k];
+            double tmp1 = R.y[k] - P.y[k];
+            double tmp2 = R.z[k] - P.z[k];
+            double tmp3 = 2.0 * P.z[k];
+            double tmp4 = 2.0 * P.y[k];
+            double tmp5 = 2.0 * P.x[k];
+            double tmp6 = 0.5 * (tmp0 * (tmp5 + tmp0) + tmp1 * (tmp4 + tmp1) + tmp2 * (tmp3 + tmp2));
+            double tmp7 = Q.x[k] - P.x[k];
+            double tmp8 = Q.y[k] - P.y[k];
+            double tmp9 = Q.z[k] - P.z[k];
+            double tmp10 = 0.5 * (tmp7 * (tmp5 + tmp7) + tmp8 * (tmp4 + tmp8) + tmp9 * (tmp3 + tmp9));
+            double tmp11 = tmp1 * tmp7 - tmp0 * tmp8;
+            double tmp12 = tmp2 * tmp7 - tmp0 * tmp9;
+            double tmp13 = tmp2 * tmp8 - tmp1 * tmp9;
+            double tmp14 = tmp6 * tmp7 - tmp0 * tmp10;
+            double tmp15 = tmp6 * tmp8 - tmp1 * tmp10;
+            double tmp16 = tmp6 * tmp9 - tmp2 * tmp10;
+            c0[k] = tmp11;
+            c1[k] = tmp12;
+            c2[k] = tmp13;
+            c3[k] = tmp13 * P.x[k] + tmp11 * P.z[k] - tmp12 * P.y[k];
+            c4[k] = tmp14;
+            c5[k] = tmp15;
+            c6[k] = tmp16;
+            double tmp17 = 0.5 * (P.z[k] * P.z[k] + P.y[k] * P.y[k] + P.x[k] * P.x[k]);
+            c7[k] = tmp11 * tmp17 + tmp15 * P.x[k] - tmp14 * P.y[k];
+            c8[k] = tmp12 * tmp17 + tmp16 * P.x[k] - tmp14 * P.z[k];
+            c9[k] = tmp13 * tmp17 + tmp16 * P.y[k] - tmp15 * P.z[k];
+        }
+        #endregion
+    }
+
+    protected override void Generated512(double[][] i, double[][] o)
+    {
+        Vec3Columns P = new(i, 0);
+        Vec3Columns Q = new(i, 3);
+        Vec3Columns R = new(i, 6);
+        double[] c0 = o[0], c1 = o[1], c2 = o[2], c3 = o[3], c4 = o[4], c5 = o[5], c6 = o[6], c7 = o[7], c8 = o[8], c9 = o[9];
+        #region GMac : CircleThroughPoints
+        //GMac.Type("Vector512<double>");
+        //GMac.Batch("k");
+        //GMac.Bind("p1", "ConformalPoint3D", "P[k]");
+        //GMac.Bind("p2", "ConformalPoint3D", "Q[k]");
+        //GMac.Bind("p3", "ConformalPoint3D", "R[k]");
+        //GMac.Bind("phi.no^e1^e2", "<c0[k]>");
+        //GMac.Bind("phi.no^e1^e3", "<c1[k]>");
+        //GMac.Bind("phi.no^e2^e3", "<c2[k]>");
+        //GMac.Bind("phi.e1^e2^e3", "<c3[k]>");
+        //GMac.Bind("phi.no^e1^ni", "<c4[k]>");
+        //GMac.Bind("phi.no^e2^ni", "<c5[k]>");
+        //GMac.Bind("phi.no^e3^ni", "<c6[k]>");
+        //GMac.Bind("phi.e1^e2^ni", "<c7[k]>");
+        //GMac.Bind("phi.e1^e3^ni", "<c8[k]>");
+        //GMac.Bind("phi.e2^e3^ni", "<c9[k]>");
+        int count0 = P.x.Length;
+        if (P.y.Length != count0 || P.z.Length != count0 || Q.x.Length != count0 || Q.y.Length != count0 || Q.z.Length != count0 || R.x.Length != count0 || R.y.Length != count0 || R.z.Length != count0 || c0.Length != count0 || c1.Length != count0 || c2.Length != count0 || c3.Length != count0 || c4.Length != count0 || c5.Length != count0 || c6.Length != count0 || c7.Length != count0 || c8.Length != count0 || c9.Length != count0) throw new global::System.ArgumentException("CircleThroughPoints: the spans of a batch must have one length, that of P.x: P.y, P.z, Q.x, Q.y, Q.z, R.x, R.y, R.z, c0, c1, c2, c3, c4, c5, c6, c7, c8, c9");
+        ref double span0 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P.x);
+        ref double span1 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P.y);
+        ref double span2 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)P.z);
+        ref double span3 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)Q.x);
+        ref double span4 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)Q.y);
+        ref double span5 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)Q.z);
+        ref double span6 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)R.x);
+        ref double span7 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)R.y);
+        ref double span8 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)R.z);
+        ref double span9 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)c0);
+        ref double span10 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)c1);
+        ref double span11 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)c2);
+        ref double span12 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)c3);
+        ref double span13 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)c4);
+        ref double span14 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)c5);
+        ref double span15 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)c6);
+        ref double span16 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)c7);
+        ref double span17 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)c8);
+        ref double span18 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)c9);
+        var tmpC0 = Vector512.Create(2.0);
+        var tmpC1 = Vector512.Create(0.5);
+        int k = 0;
+        for (; k <= count0 - Vector512<double>.Count; k += Vector512<double>.Count)
+        {
+            var item0 = Vector512.LoadUnsafe(ref span0, (nuint)k);
+            var item1 = Vector512.LoadUnsafe(ref span1, (nuint)k);
+            var item2 = Vector512.LoadUnsafe(ref span2, (nuint)k);
+            var item3 = Vector512.LoadUnsafe(ref span3, (nuint)k);
+            var item4 = Vector512.LoadUnsafe(ref span4, (nuint)k);
+            var item5 = Vector512.LoadUnsafe(ref span5, (nuint)k);
+            var item6 = Vector512.LoadUnsafe(ref span6, (nuint)k);
+            var item7 = Vector512.LoadUnsafe(ref span7, (nuint)k);
+            var item8 = Vector512.LoadUnsafe(ref span8, (nuint)k);
+            var tmp0 = item6 - item0;
+            var tmp1 = item7 - item1;
+            var tmp2 = item8 - item2;
+            var tmp3 = tmpC0 * item2;
+            var tmp4 = tmpC0 * item1;
+            var tmp5 = tmpC0 * item0;
+            var tmp6 = tmpC1 * (tmp0 * (tmp5 + tmp0) + tmp1 * (tmp4 + tmp1) + tmp2 * (tmp3 + tmp2));
+            var tmp7 = item3 - item0;
+            var tmp8 = item4 - item1;
+            var tmp9 = item5 - item2;
+            var tmp10 = tmpC1 * (tmp7 * (tmp5 + tmp7) + tmp8 * (tmp4 + tmp8) + tmp9 * (tmp3 + tmp9));
+            var tmp11 = tmp1 * tmp7 - tmp0 * tmp8;
+            var tmp12 = tmp2 * tmp7 - tmp0 * tmp9;
+            var tmp13 = tmp2 * tmp8 - tmp1 * tmp9;
+            var tmp14 = tmp6 * tmp7 - tmp0 * tmp10;
+            var tmp15 = tmp6 * tmp8 - tmp1 * tmp10;
+            var tmp16 = tmp6 * tmp9 - tmp2 * tmp10;
+            var result0 = tmp11;
+            var result1 = tmp12;
+            var result2 = tmp13;
+            var result3 = tmp13 * item0 + tmp11 * item2 - tmp12 * item1;
+            var result4 = tmp14;
+            var result5 = tmp15;
+            var result6 = tmp16;
+            var tmp17 = tmpC1 * (item2 * item2 + item1 * item1 + item0 * item0);
+            var result7 = tmp11 * tmp17 + tmp15 * item0 - tmp14 * item1;
+            var result8 = tmp12 * tmp17 + tmp16 * item0 - tmp14 * item2;
+            var result9 = tmp13 * tmp17 + tmp16 * item1 - tmp15 * item2;
+            result0.StoreUnsafe(ref span9, (nuint)k);
+            result1.StoreUnsafe(ref span10, (nuint)k);
+            result2.StoreUnsafe(ref span11, (nuint)k);
+            result3.StoreUnsafe(ref span12, (nuint)k);
+            result4.StoreUnsafe(ref span13, (nuint)k);
+            result5.StoreUnsafe(ref span14, (nuint)k);
+            result6.StoreUnsafe(ref span15, (nuint)k);
+            result7.StoreUnsafe(ref span16, (nuint)k);
+            result8.StoreUnsafe(ref span17, (nuint)k);
+            result9.StoreUnsafe(ref span18, (nuint)k);
+        }
+        for (; k < count0; k++)
+        {
+            double tmp0 = R.x[k] - P.x[k];
+            double tmp1 = R.y[k] - P.y[k];
+            double tmp2 = R.z[k] - P.z[k];
+            double tmp3 = 2.0 * P.z[k];
+            double tmp4 = 2.0 * P.y[k];
+            double tmp5 = 2.0 * P.x[k];
+            double tmp6 = 0.5 * (tmp0 * (tmp5 + tmp0) + tmp1 * (tmp4 + tmp1) + tmp2 * (tmp3 + tmp2));
+            double tmp7 = Q.x[k] - P.x[k];
+            double tmp8 = Q.y[k] - P.y[k];
+            double tmp9 = Q.z[k] - P.z[k];
+            double tmp10 = 0.5 * (tmp7 * (tmp5 + tmp7) + tmp8 * (tmp4 + tmp8) + tmp9 * (tmp3 + tmp9));
+            double tmp11 = tmp1 * tmp7 - tmp0 * tmp8;
+            double tmp12 = tmp2 * tmp7 - tmp0 * tmp9;
+            double tmp13 = tmp2 * tmp8 - tmp1 * tmp9;
+            double tmp14 = tmp6 * tmp7 - tmp0 * tmp10;
+            double tmp15 = tmp6 * tmp8 - tmp1 * tmp10;
+            double tmp16 = tmp6 * tmp9 - tmp2 * tmp10;
+            c0[k] = tmp11;
+            c1[k] = tmp12;
+            c2[k] = tmp13;
+            c3[k] = tmp13 * P.x[k] + tmp11 * P.z[k] - tmp12 * P.y[k];
+            c4[k] = tmp14;
+            c5[k] = tmp15;
+            c6[k] = tmp16;
+            double tmp17 = 0.5 * (P.z[k] * P.z[k] + P.y[k] * P.y[k] + P.x[k] * P.x[k]);
+            c7[k] = tmp11 * tmp17 + tmp15 * P.x[k] - tmp14 * P.y[k];
+            c8[k] = tmp12 * tmp17 + tmp16 * P.x[k] - tmp14 * P.z[k];
+            c9[k] = tmp13 * tmp17 + tmp16 * P.y[k] - tmp15 * P.z[k];
+        }
+        #endregion
+    }
+}
