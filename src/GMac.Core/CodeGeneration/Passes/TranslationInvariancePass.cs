@@ -84,11 +84,30 @@ public sealed class TranslationInvariancePass(bool differencesEverywhere = false
                 var cost = Cost(lowered);
                 if (cost > original || cost >= bestCost) continue;
                 bestCost = cost;
-                best = BlockRewriting.Substitute(lowered, used.ToDictionary(d => d.Key,
+                best = BlockRewriting.Substitute(ReadingPoints(lowered, used), used.ToDictionary(d => d.Key,
                     d => ExprFactory.Difference(ExprFactory.Variable(d.Value.Of), ExprFactory.Variable(d.Value.From)), StringComparer.Ordinal));
             }
         }
         return best;
+    }
+
+    /// <summary>
+    /// The lowered form with each linear sum that mixes differences and anchor coordinates written
+    /// over the points themselves where that costs no more: (q − p) + 2p, the second factor of
+    /// ½(q − p)·(q + p), is q + p, one addition, and ½(q − p) + p is ½(q + p), whose common ½
+    /// later passes take out of the sum. A linear form loses no accuracy either way; left over
+    /// the differences it costs a scaling and an addition more per coordinate.
+    /// </summary>
+    private static Expr ReadingPoints(Expr lowered, List<KeyValuePair<string, (string Of, string From)>> differences)
+    {
+        var back = differences.ToDictionary(d => d.Key, d => Scalar.Variable(d.Value.Of) - Scalar.Variable(d.Value.From), StringComparer.Ordinal);
+        return BlockRewriting.ReplaceNodes(lowered, node =>
+        {
+            if (node is not SumExpr || !PolynomialLifting.TryLift(node, out var linear) || HasDegreeTwo(linear)) return null;
+            if (!linear.Variables.Any(back.ContainsKey) || linear.Variables.All(back.ContainsKey)) return null;
+            var direct = ScalarLowering.Lower(linear.Substitute(back));
+            return Cost(direct) <= Cost(node) ? direct : null;
+        });
     }
 
     /// <summary>The difference form of one sum, or null to keep it (and look inside it).</summary>
