@@ -9,7 +9,7 @@ namespace GMac.CSharp.BindingPoints;
 
 /// <summary>
 /// Reads one <c>//GMac.Bind(…);</c>, <c>//GMac.AssumeMin(…);</c>, <c>//GMac.AssumeMax(…);</c> or
-/// <c>//GMac.Type("float");</c> or <c>//GMac.Batch("i");</c> line as the C# invocation it looks like, so string escapes and verbatim strings mean what they
+/// <c>//GMac.Type("float");</c>, <c>//GMac.Fma(true);</c> or <c>//GMac.Batch("i");</c> line as the C# invocation it looks like, so string escapes and verbatim strings mean what they
 /// mean in C#. A string-literal value is a template (its <c>&lt;…&gt;</c> parts are C# text); any
 /// other expression is bare C#. This is the one reader of the syntax: gmac and the benchmark
 /// report both go through it.
@@ -57,7 +57,7 @@ public static partial class BindingLineReader
                 Expression: MemberAccessExpressionSyntax { Expression: IdentifierNameSyntax { Identifier.ValueText: "GMac" } } member,
             } call)
         {
-            error = $"'//{code.Trim()}' is not a call of GMac.Bind, GMac.AssumeMin, GMac.AssumeMax, GMac.Type or GMac.Batch";
+            error = $"'//{code.Trim()}' is not a call of GMac.Bind, GMac.AssumeMin, GMac.AssumeMax, GMac.Type, GMac.Fma or GMac.Batch";
             return null;
         }
         var args = call.ArgumentList.Arguments;
@@ -111,6 +111,21 @@ public static partial class BindingLineReader
             case "Type":
                 error = "GMac.Type takes one string, the scalar type of the code: GMac.Type(\"float\") or GMac.Type(\"double\")";
                 return null;
+            case "Fma" when args.Count == 1:
+            {
+                var argument = args[0].Expression;
+                bool? enabled = argument.Kind() switch
+                {
+                    SyntaxKind.TrueLiteralExpression => true,
+                    SyntaxKind.FalseLiteralExpression => false,
+                    _ => null,
+                };
+                // Any other value is reported where the region is generated, under its own code.
+                return new FusedMultiplyAddSpec(enabled, argument.ToString(), line, column);
+            }
+            case "Fma":
+                error = $"GMac.Fma takes one argument, true or false, not {args.Count}: GMac.Fma(true) fuses products into the sums they are added to";
+                return null;
             case "Batch" when args.Count == 1 && StringValue(args[0]) is { } index && SyntaxFacts.IsValidIdentifier(index.Trim())
                 && SyntaxFacts.GetKeywordKind(index.Trim()) == SyntaxKind.None:
                 return new BatchSpec(index.Trim(), line, column);
@@ -118,7 +133,7 @@ public static partial class BindingLineReader
                 error = "GMac.Batch takes one string, the name of the item index the bindings read spans at: GMac.Batch(\"i\") with GMac.Bind(\"u.e1\", \"<ux[i]>\")";
                 return null;
             default:
-                error = $"unknown binding command 'GMac.{command}'; expected Bind, AssumeMin, AssumeMax, Type or Batch";
+                error = $"unknown binding command 'GMac.{command}'; expected Bind, AssumeMin, AssumeMax, Type, Fma or Batch";
                 return null;
         }
     }

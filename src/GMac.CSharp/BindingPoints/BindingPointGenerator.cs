@@ -106,6 +106,7 @@ internal static class BindingPointGenerator
         Func<string, bool> isTaken, List<Diagnostic> diagnostics)
     {
         if (ScalarTypeOf(file, point, context, diagnostics) is not { } scalarType) return new GeneratedRegion(point, null, null);
+        if (FusedMultiplyAddOf(file, point, context, diagnostics) is not { } fma) return new GeneratedRegion(point, null, null);
         var batches = point.Specs.OfType<BatchSpec>().ToList();
         foreach (var extra in batches.Skip(1))
             diagnostics.Add(new(DiagnosticCodes.InvalidBatch, SourceSpan.At(file.Path, extra.Line, extra.Column),
@@ -123,6 +124,7 @@ internal static class BindingPointGenerator
                 IncludeStatistics = includeStatistics,
                 IsNameTaken = isTaken,
                 ScalarType = scalarType,
+                FusedMultiplyAdd = fma,
                 DeclareOutputs = generated.Plan?.DefaultOutputs ?? false,
                 MayOverwrite = BindingExpressions.Overwrites(generated.Result!.Block, point.Scope.Storage),
             }, batches.FirstOrDefault()?.Index);
@@ -149,7 +151,7 @@ internal static class BindingPointGenerator
                 : SourceSpan.At(file.Path, point.RegionLineNumber, point.RegionColumn);
             diagnostics.Add(new(p.Descriptor, at, p.Message));
         }
-        return code is null ? new GeneratedRegion(point, outcome, null) : new GeneratedRegion(point, outcome, code) { ScalarType = scalarType };
+        return code is null ? new GeneratedRegion(point, outcome, null) : new GeneratedRegion(point, outcome, code) { ScalarType = scalarType, FusedMultiplyAdd = fma };
     }
 
     /// <summary>
@@ -179,6 +181,26 @@ internal static class BindingPointGenerator
             return null;
         }
         return lines.Count > 1 ? null : name;
+    }
+
+    /// <summary>
+    /// The binding point's <c>//GMac.Fma</c>, else the run's choice (<c>--fma</c>); null (with a
+    /// diagnostic at the line) for an argument other than true or false, or a second Fma line.
+    /// </summary>
+    private static bool? FusedMultiplyAddOf(BindingPointFile file, BindingPoint point, GenerationContext context, List<Diagnostic> diagnostics)
+    {
+        var lines = point.Specs.OfType<FusedMultiplyAddSpec>().ToList();
+        foreach (var extra in lines.Skip(1))
+            diagnostics.Add(new(DiagnosticCodes.InvalidFusedMultiplyAdd, SourceSpan.At(file.Path, extra.Line, extra.Column),
+                $"a second GMac.Fma line; the binding point's choice is already given at line {lines[0].Line}"));
+        if (lines.Count == 0) return context.DefaultFusedMultiplyAdd;
+        if (lines[0].Enabled is null)
+        {
+            diagnostics.Add(new(DiagnosticCodes.InvalidFusedMultiplyAdd, SourceSpan.At(file.Path, lines[0].Line, lines[0].Column),
+                $"GMac.Fma({lines[0].Text}): the argument must be true or false (the C# literal, unquoted)"));
+            return null;
+        }
+        return lines.Count > 1 ? null : lines[0].Enabled;
     }
 
     /// <summary>

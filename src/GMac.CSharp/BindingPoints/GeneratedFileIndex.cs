@@ -35,6 +35,7 @@ internal sealed class GeneratedFileIndex
         key.Append(GenerationContext.ToolVersion).Append('|').Append(stats?.ToString() ?? "either").Append('|');
         // A float run must not take a file left current by a double run for current.
         if (context.DefaultScalarType != "double") key.Append(context.DefaultScalarType).Append('|');
+        if (context.DefaultFusedMultiplyAdd) key.Append("fma|");
         foreach (var tree in context.Project.SyntaxTrees.OrderBy(t => t.FilePath, StringComparer.Ordinal))
             key.Append(tree.FilePath).Append('\0').Append(tree.Text).Append('\0');
         var index = new GeneratedFileIndex(cacheDirectory is null ? null : Path.Combine(cacheDirectory, FileName), Hash(Encoding.UTF8.GetBytes(key.ToString())));

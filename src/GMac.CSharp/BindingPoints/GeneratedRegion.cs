@@ -9,4 +9,7 @@ namespace GMac.CSharp.BindingPoints;
 internal sealed record GeneratedRegion(BindingPoint Point, GenerationOutcome? Outcome, string? Code)
 {
     public string ScalarType { get; init; } = "double";
+
+    /// <summary>Whether the code fuses products into sums (its <c>//GMac.Fma</c> line's, else the run's).</summary>
+    public bool FusedMultiplyAdd { get; init; }
 }

@@ -28,6 +28,9 @@ internal sealed class GenerationContext
     /// <summary>The scalar type of binding points without a <c>//GMac.Type</c> line (<c>--scalar</c>).</summary>
     public string DefaultScalarType { get; set; } = "double";
 
+    /// <summary>Whether binding points without a <c>//GMac.Fma</c> line fuse products into sums (<c>--fma</c>).</summary>
+    public bool DefaultFusedMultiplyAdd { get; set; }
+
     /// <summary>The caching simplifier behind the generator (its hits include answers found by identity).</summary>
     public CachingCasAdapter Cas { get; }
 

@@ -50,7 +50,8 @@ internal static class SourceVerification
             failures++;
         }
 
-        var remapped = regions.Select(r => KernelCompiler.Remap(r.Region.Outcome!.Result!.Block, r.Region.Outcome.Plan!.InputTexts.Keys, r.Region.Point.Scope.Storage)).ToList();
+        var remapped = regions.Select(r => KernelCompiler.Remap(r.Region.Outcome!.Result!.Block, r.Region.Outcome.Plan!.InputTexts.Keys, r.Region.Point.Scope.Storage)
+            with { FusedMultiplyAdd = r.Region.FusedMultiplyAdd }).ToList();
         var kernels = KernelCompiler.Compile(remapped, regions.Select(r => r.Region.ScalarType).ToList());
         var passed = 0;
         for (var k = 0; k < regions.Count; k++)

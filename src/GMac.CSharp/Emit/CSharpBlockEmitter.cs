@@ -87,11 +87,12 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
 
         var writer = CreateWriter(options, VariableText, FreshName);
         var declaredType = DeclaredType(options);
+        string Value(Expr e) => writer.Print(options.FusedMultiplyAdd ? FusedMultiplyAdds.Contract(e) : e);
 
         // A value dropped into an output block's text stands among operators the emitter cannot see
         // ("2 * <w.e1>" with w.e1 = a - b must read 2 * (a - b)): only a name or a literal that is not
         // negative goes in bare (a variable's text is already parenthesized where it needs to be).
-        string Operand(Expr e) => e is VariableExpr or ConstantExpr { Value: >= 0 } ? writer.Print(e) : $"({writer.Print(e)})";
+        string Operand(Expr e) => e is VariableExpr or ConstantExpr { Value: >= 0 } ? Value(e) : $"({Value(e)})";
 
         var body = new StringBuilder();
         var declared = new HashSet<string>(StringComparer.Ordinal);
@@ -106,13 +107,13 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
             {
                 case AssignmentStatement { IsOutput: true } o when held.Contains(o):
                     var holder = $"{prefix}{temps.Count + deferred.Count}";
-                    line.Append(declaredType).Append(' ').Append(holder).Append(" = ").Append(writer.Print(o.Value)).Append(';');
+                    line.Append(declaredType).Append(' ').Append(holder).Append(" = ").Append(Value(o.Value)).Append(';');
                     deferred.Add((block.OutputTargets[o.Target].Trim(), holder));
                     break;
                 case AssignmentStatement { IsOutput: true } o:
                     var target = block.OutputTargets[o.Target].Trim();
                     if (options.DeclareOutputs && declared.Add(target)) line.Append(declaredType).Append(' ');
-                    line.Append(target).Append(" = ").Append(writer.Print(o.Value)).Append(';');
+                    line.Append(target).Append(" = ").Append(Value(o.Value)).Append(';');
                     break;
                 case AssignmentStatement t when sinCos.TryGetPair(t, out var pair):
                     var (sine, cosine) = (tempName[pair.Sine], tempName[pair.Cosine]);
@@ -123,7 +124,7 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
                 case AssignmentStatement t:
                     var name = tempName[t.Target];
                     if (declared.Add(name)) line.Append(declaredType).Append(' ');
-                    line.Append(name).Append(" = ").Append(writer.Print(t.Value)).Append(';');
+                    line.Append(name).Append(" = ").Append(Value(t.Value)).Append(';');
                     break;
                 case VerbatimStatement v:
                     // An output block's text has the line endings of its .gmac file: give it the file's own.
@@ -168,6 +169,7 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
             "pow" => "Math.Pow",
             "sinh" => "Math.Sinh",
             "cosh" => "Math.Cosh",
+            FusedMultiplyAdds.Function => "Math.FusedMultiplyAdd",
             _ => throw new InvalidOperationException($"No C# function for '{f}'."),
         };
         return single ? "MathF" + function["Math".Length..] : function;

@@ -12,6 +12,13 @@ public sealed record CSharpEmitOptions
     /// </summary>
     public string ScalarType { get; init; } = "double";
 
+    /// <summary>
+    /// Writes a product added to or subtracted from a sum as one fused multiply–add
+    /// (<c>Math.FusedMultiplyAdd</c>, <c>Vector256.FusedMultiplyAdd</c>, …): one rounding instead of
+    /// two, so results differ from the unfused code in the last bits. Off by default.
+    /// </summary>
+    public bool FusedMultiplyAdd { get; init; }
+
     /// <summary>Adds a first comment line with the operation counts.</summary>
     public bool IncludeStatistics { get; init; }
 

@@ -62,10 +62,11 @@ public sealed class CSharpVectorEmitter : CSharpBlockEmitter
             "exp" => $"{type.Family}.Exp",
             "log" => $"{type.Family}.Log",
             "abs" => $"{type.Family}.Abs",
+            FusedMultiplyAdds.Function => $"{type.Family}.FusedMultiplyAdd",
             _ => throw new InvalidOperationException($"No vector function for '{f}'."),
         };
 
-        private static bool HasVectorForm(Expr e) => e is not PowerExpr && (e is not CallExpr call || call.Function is "sin" or "cos" or "sqrt" or "exp" or "log" or "abs");
+        private static bool HasVectorForm(Expr e) => e is not PowerExpr && (e is not CallExpr call || call.Function is "sin" or "cos" or "sqrt" or "exp" or "log" or "abs" or FusedMultiplyAdds.Function);
 
         /// <summary>A constant as a vector: broadcast once, at the top, into a local named after nothing else.</summary>
         private string Constant(ConstantExpr c)

@@ -15,4 +15,7 @@ internal sealed record KernelBlock(CodeBlock Block, List<string> Inputs, List<st
 
     /// <summary>Output index → the input slot it is written to.</summary>
     public IReadOnlyDictionary<int, int> InPlace { get; init; } = new Dictionary<int, int>();
+
+    /// <summary>Whether the code is compiled with products fused into sums, as its region was generated.</summary>
+    public bool FusedMultiplyAdd { get; init; }
 }

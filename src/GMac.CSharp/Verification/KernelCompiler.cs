@@ -75,7 +75,7 @@ internal static class KernelCompiler
         var body = CSharpEmitter.Emit(kernel.Block, new CSharpEmitOptions
         {
             Indent = "        ", NewLine = "\n", ScalarType = scalarType, IsNameTaken = n => n.StartsWith("__", StringComparison.Ordinal),
-            MayOverwrite = kernel.MayOverwrite,
+            MayOverwrite = kernel.MayOverwrite, FusedMultiplyAdd = kernel.FusedMultiplyAdd,
         });
         foreach (var (output, input) in kernel.InPlace) body += $"        __out[{output}] = __in[{input}];\n";
         var sb = new StringBuilder();

@@ -5,7 +5,7 @@ using GMac.CSharp.BindingPoints;
 namespace GMac.Cli.Commands;
 
 /// <summary>
-/// <c>gmac generate [PATH…] [--sources-from FILE] --dsl DIR|FILE… [--dsl-from FILE] [--standard-library] [--check] [--stats] [--cache DIR] [--scalar TYPE]</c>:
+/// <c>gmac generate [PATH…] [--sources-from FILE] --dsl DIR|FILE… [--dsl-from FILE] [--standard-library] [--check] [--stats] [--cache DIR] [--scalar TYPE] [--fma]</c>:
 /// rewrites every binding point under the paths and in the listed files; with <c>--check</c> only
 /// reports files that are out of date.
 /// </summary>
@@ -28,7 +28,8 @@ internal static class GenerateCommand
         var stats = SharedOptions.Stats("begin each region with a comment counting its operations");
         var cache = SharedOptions.Cache();
         var scalar = SharedOptions.Scalar("the scalar type of the code where a binding point has no //GMac.Type line (default: double)");
-        var command = new Command("generate", "Rewrite the binding points (#region GMac blocks) of C# files.") { paths, sourcesFrom, check, stats, cache, scalar };
+        var fma = SharedOptions.Fma("fuse a product into the sum it is added to (Math.FusedMultiplyAdd, Vector256.FusedMultiplyAdd, …) where a binding point has no //GMac.Fma line");
+        var command = new Command("generate", "Rewrite the binding points (#region GMac blocks) of C# files.") { paths, sourcesFrom, check, stats, cache, scalar, fma };
         dsl.AddTo(command);
         UnknownOptions.RejectIn(paths, command);
         command.SetAction(r =>
@@ -47,6 +48,7 @@ internal static class GenerateCommand
             var context = DslOptions.Load(dslSources, r.GetValue(cache), error);
             if (context is null) return ExitCodes.Diagnostics;
             context.DefaultScalarType = r.GetValue(scalar)!;
+            context.DefaultFusedMultiplyAdd = r.GetValue(fma);
             return SourceGeneration.Run(context, sources, r.GetValue(check), r.GetValue(stats), r.InvocationConfiguration.Output, error, watch) ? ExitCodes.Success : ExitCodes.Diagnostics;
         });
         return command;

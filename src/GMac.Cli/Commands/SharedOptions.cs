@@ -39,6 +39,9 @@ internal static class SharedOptions
         return option;
     }
 
+    /// <summary>Fused multiply–add contraction of generated code; a binding point's <c>//GMac.Fma</c> line overrides it.</summary>
+    public static Option<bool> Fma(string what) => new("--fma") { Description = what };
+
     /// <summary>The C# files or folders to work on; none means the current folder.</summary>
     public static Argument<string[]> Paths(string what)
     {

@@ -9,7 +9,7 @@ using GMac.Dsl.Generation;
 namespace GMac.Cli.Commands;
 
 /// <summary>
-/// <c>gmac show MACRO --dsl DIR|FILE… [--bind …] [--min EXPR=V] [--max EXPR=V] [--stats] [--scalar TYPE]</c>:
+/// <c>gmac show MACRO --dsl DIR|FILE… [--bind …] [--min EXPR=V] [--max EXPR=V] [--stats] [--scalar TYPE] [--fma]</c>:
 /// prints the code generated for one macro, with default bindings (<c>u_e1</c>, <c>w_e1</c>, …) unless
 /// given; when only inputs are bound, the outputs get the default names.
 /// </summary>
@@ -31,6 +31,7 @@ internal static class ShowCommand
         var stats = SharedOptions.Stats("begin the code with a comment counting its operations");
         var cache = SharedOptions.Cache();
         var scalar = SharedOptions.Scalar("the scalar type of the printed code (default: double)");
+        var fma = SharedOptions.Fma("fuse a product into the sum it is added to (Math.FusedMultiplyAdd, Vector256.FusedMultiplyAdd, …)");
         var command = new Command("show", "Print the code generated for one macro.") { macro };
         dsl.AddTo(command);
         UnknownOptions.RejectIn(macro, command);
@@ -38,8 +39,9 @@ internal static class ShowCommand
         command.Options.Add(stats);
         command.Options.Add(cache);
         command.Options.Add(scalar);
+        command.Options.Add(fma);
         command.SetAction(r => dsl.Resolve(r, r.InvocationConfiguration.Error, out var failure) is not { } sources ? failure : Run(r.GetValue(macro)!, sources, r.GetValue(cache), SpecsInOrder(r, specOptions), r.GetValue(stats),
-            r.GetValue(scalar)!, r.InvocationConfiguration.Output, r.InvocationConfiguration.Error));
+            r.GetValue(scalar)!, r.GetValue(fma), r.InvocationConfiguration.Output, r.InvocationConfiguration.Error));
         return command;
     }
 
@@ -69,7 +71,7 @@ internal static class ShowCommand
     }
 
     private static int Run(string macro, IReadOnlyList<string> dsl, string? cache, List<(string Option, string Value)> values, bool stats, string scalarType,
-        TextWriter output, TextWriter error)
+        bool fma, TextWriter output, TextWriter error)
     {
         // Every value was checked by the option's validator.
         var specs = values.Select((v, i) => ParseSpec(v.Option, v.Value, i + 1)!).ToList();
@@ -94,6 +96,7 @@ internal static class ShowCommand
                 NewLine = Environment.NewLine,
                 IncludeStatistics = stats,
                 ScalarType = scalarType,
+                FusedMultiplyAdd = fma,
                 // Outputs no --bind names get default names, declared as the region would declare them.
                 DeclareOutputs = generated.Plan?.DefaultOutputs ?? false,
                 MayOverwrite = BindingExpressions.Overwrites(generated.Result!.Block),

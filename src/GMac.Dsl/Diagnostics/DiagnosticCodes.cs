@@ -100,6 +100,7 @@ public static class DiagnosticCodes
     public static readonly DiagnosticDescriptor RegionNotAmongStatements = new("GMAC0431", Error, "a GMac region is where statements cannot stand (among members, in an expression, under an if without braces)", ReportedBy.SourceFiles);
     public static readonly DiagnosticDescriptor AlreadyDeclared = new("GMAC0432", Error, "the code of a region declares a local already declared where it goes (a default output name, by a parameter or another region)", ReportedBy.Generate | ReportedBy.Verify | ReportedBy.Build);
     public static readonly DiagnosticDescriptor InvalidBatch = new("GMAC0440", Error, "a batch binding point reads or writes what is not one item of its spans: the index other than as span[i], an output not written at [i], no span at all, or a second Batch line", ReportedBy.SourceFiles);
+    public static readonly DiagnosticDescriptor InvalidFusedMultiplyAdd = new("GMAC0455", Error, "a GMac.Fma line whose argument is not true or false, or a second GMac.Fma line", ReportedBy.SourceFiles);
 
     /// <summary>Every descriptor above, in the order written.</summary>
     public static IReadOnlyList<DiagnosticDescriptor> All { get; } = typeof(DiagnosticCodes)
