@@ -110,12 +110,12 @@ public sealed partial class Multivector<T>
         var w = square.Grade(4);
         if (!Negligible(square.SelectGrades(g => g is not (0 or 4)), square))
             throw new AlgebraException(Frame.Name,
-                $"{what} of {this} needs a square with grades 0 and 4 only (frames up to 5D), but it is {square}.");
+                $"{what} needs an argument whose square has grades 0 and 4 only (frames up to 5D), but its square has {GradeList(square.Grades)}.");
         if (w.IsZero) return (w, T.Zero);
         var ww = w.Gp(w);
         if (!Negligible(ww.SelectGrades(g => g != 0), ww))
             throw new AlgebraException(Frame.Name,
-                $"{what} of {this} needs the 4-vector part of its square to be a blade (a 4D or 5D frame), but {w} squares to {ww}.");
+                $"{what} needs the 4-vector part of its argument's square to be a blade (a 4D or 5D frame), but that part squares to {GradeList(ww.Grades)}.");
         return (w, ww.ScalarPart);
     }
 

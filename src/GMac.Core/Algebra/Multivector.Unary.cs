@@ -162,7 +162,7 @@ public sealed partial class Multivector<T>
         catch (AlgebraException e) when (!e.ExceedsLimit)
         {
             throw new AlgebraException(Frame.Name,
-                $"the dual needs a non-null blade, but {blade} squares to zero (a degenerate metric has no dual with respect to its pseudoscalar).");
+                $"the dual needs a non-null blade, but the pseudoscalar of frame '{Frame.Name}' squares to zero (a degenerate metric has no dual with respect to its pseudoscalar).");
         }
     }
 
@@ -200,7 +200,7 @@ public sealed partial class Multivector<T>
         if (!isBlade && !square.Grade(0).Equals(square) && square.SelectGrades(g => g != 0).TermCount > 0)
         {
             if (SelectGrades(g => g != 2).IsZero) return ExpOfBivector(square);
-            throw new AlgebraException(Frame.Name, $"exp is defined here for multivectors whose square is a scalar (2-blades), but {this} squares to {square}.");
+            throw new AlgebraException(Frame.Name, $"exp is defined here for bivectors and for multivectors whose square is a scalar (blades), but this argument has {GradeList(Grades)} and its square {GradeList(square.Grades)}.");
         }
         if (T.IsZero(beta)) return Add(T.One);
         var sign = SignOf(beta) ?? SignFromMetric();
@@ -325,4 +325,13 @@ public sealed partial class Multivector<T>
             if (_ids[i] != other._ids[i] || !_coefficients[i].Equals(other._coefficients[i])) return false;
         return true;
     }
+
+    /// <summary>"grade 2" or "grades 0, 2 and 4": a multivector described by its grades, for messages
+    /// that must not print symbolic coefficients (they would show generated names, not the user's).</summary>
+    internal static string GradeList(IReadOnlyList<int> grades) => grades.Count switch
+    {
+        0 => "no grade (it is zero)",
+        1 => $"grade {grades[0]}",
+        _ => $"grades {string.Join(", ", grades.Take(grades.Count - 1))} and {grades[^1]}",
+    };
 }

@@ -39,7 +39,7 @@ public sealed partial class Multivector<T>
             return w.IsZero ? result : result + m2.Gp(w).Grade(2).Scale(derivative);
         }
         if (SignOf(omega) is not > 0 && SignFromMetric() != -1)
-            throw new AlgebraException(Frame.Name, $"log is defined here for rotors and motors; the 4-vector part of {this} squares to {omega}, which is not known to be ≥ 0.");
+            throw new AlgebraException(Frame.Name, "log is defined here for rotors and motors; the square of the argument's 4-vector part is not known to be ≥ 0 (a boost, dilator or loxodrome).");
         return OnSplitPair(c0, w, omega, x => LogFactor(x, T.Abs(T.One - x * x)).Value, x => LogFactor(x, T.Abs(T.One - x * x)).Derivative)
             .LeftTimes(m2, m => m.Grade(2));
     }

@@ -42,6 +42,12 @@ public sealed class MacroCodeGenerator_MessagesInUserWords
             performs:
                 y = general_inverse(p.<e0> * p3.multivector { e0 : 1 });
         end macro
+        define macro ExpOfMixedGrades as
+            inputs: { x : e3d.Vector }
+            outputs: { y : e3d.Multivector }
+            performs:
+                y = exp(x gp e3d.multivector { e1 : 1 } + x);
+        end macro
         define macro DividesByZero as
             inputs: { x : e3d.Vector }
             outputs: { w : e3d.Vector }
@@ -57,6 +63,7 @@ public sealed class MacroCodeGenerator_MessagesInUserWords
     [InlineData("NullInverse", "inverse(x.<e1> * c3.multivector { ni : 1 })", "GMAC0325")]
     [InlineData("NoGeneralInverse", "general_inverse(x - x + 1 + e3d.multivector { e1 : 1 })", "GMAC0325")]
     [InlineData("DegenerateInverse", "general_inverse(p.<e0> * p3.multivector { e0 : 1 })", "GMAC0325")]
+    [InlineData("ExpOfMixedGrades", "exp(x gp e3d.multivector { e1 : 1 } + x)", "GMAC0320")]
     [InlineData("DividesByZero", "x / (x.<e1> * x.<e2> - x.<e2> * x.<e1>)", "GMAC0313")]
     public void The_message_quotes_the_expression_as_written(string macro, string expression, string code)
     {
