@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using GMac.Core.Numerics;
 using GMac.Core.Symbolic;
 
@@ -29,10 +30,24 @@ public static class AccuracyProbe
     /// <summary>The worst normwise relative error of the outputs over the probes; null where the block cannot be evaluated exactly (math calls, verbatim text, a zero division).</summary>
     public static double? Error(CodeBlock block) => Error(block, SideRelations.None);
 
+    /// <summary>
+    /// Errors already probed, per block (blocks are immutable): generation probes its forms once to
+    /// decide on difference forms and again to rank them, and the exact evaluation is the costly part.
+    /// </summary>
+    private static readonly ConditionalWeakTable<CodeBlock, Tuple<SideRelations, double?>> Probed = new();
+
     /// <summary>As <see cref="Error(CodeBlock)"/>, with the inputs satisfying <paramref name="relations"/>.</summary>
     public static double? Error(CodeBlock block, SideRelations relations)
     {
         ArgumentNullException.ThrowIfNull(relations);
+        if (Probed.TryGetValue(block, out var known) && ReferenceEquals(known.Item1, relations)) return known.Item2;
+        var error = Probe(block, relations);
+        Probed.AddOrUpdate(block, Tuple.Create(relations, error));
+        return error;
+    }
+
+    private static double? Probe(CodeBlock block, SideRelations relations)
+    {
         if (block.Statements.SelectMany(s => s.Expressions).SelectMany(e => e.DescendantsAndSelf()).Any(e => e is CallExpr)) return null;
         var names = block.InputText.Keys.ToArray();
         var worst = 0.0;
@@ -68,9 +83,8 @@ public static class AccuracyProbe
     {
         ArgumentNullException.ThrowIfNull(relations);
         if (candidatesCheapestFirst.Count < 2) return 0;
-        // forms that came out the same share one block: probe it once
-        var probed = new Dictionary<CodeBlock, double?>(ReferenceEqualityComparer.Instance);
-        double? ErrorOf(CodeBlock b) => probed.TryGetValue(b, out var e) ? e : probed[b] = Error(b, relations);
+        // forms that came out the same share one block, which Error probes once
+        double? ErrorOf(CodeBlock b) => Error(b, relations);
         // The cheapest stays when it cannot be judged or is within the absolute level: the limit
         // is never below that level, so the others need not be probed.
         if (ErrorOf(candidatesCheapestFirst[0]) is not { } cheapest || cheapest <= Threshold) return 0;
