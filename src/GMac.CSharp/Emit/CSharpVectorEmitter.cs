@@ -6,9 +6,10 @@ namespace GMac.CSharp.Emit;
 /// <summary>
 /// Prints a code block as C# over SIMD vectors (<c>Vector256&lt;double&gt;</c>, …), each lane one
 /// independent evaluation of the scalar code: operators for + − × ÷ and negation, constants
-/// broadcast once at the top, the vector forms of sqrt, sin, cos, sincos, exp, log and abs. A
-/// function .NET has no vector form of (tan, acos, atan2, pow) is computed lane by lane with the
-/// scalar <c>Math</c> function, so every lane is what the scalar code gives for its inputs.
+/// broadcast once at the top, the vector forms of sqrt, sin, cos, sincos, exp, log and abs, and acos
+/// on double lanes by <see cref="VectorArcCosine"/>. A function .NET has no vector form of (tan,
+/// atan2, pow, and acos on float lanes) is computed lane by lane with the scalar <c>Math</c>
+/// function, so every lane is what the scalar code gives for its inputs.
 /// </summary>
 public sealed class CSharpVectorEmitter : CSharpBlockEmitter
 {
@@ -89,6 +90,9 @@ public sealed class CSharpVectorEmitter : CSharpBlockEmitter
             var children = e.Children.Select(PerLane).ToList();
             var node = children.SequenceEqual(e.Children) ? e : e.WithChildren(children);
             if (HasVectorForm(node)) return node;
+            if (node is CallExpr { Function: "acos" } && type.HasFixedWidth && !type.IsSingle)
+                return new VariableExpr(LaneMarker + VectorArcCosine.Emit(type.Family, Named(node.Children[0]),
+                    v => Constant(new ConstantExpr(v)), () => freshName("L"), _before));
             var single = type.IsSingle;
             // Constant arguments stay scalar literals; the rest are read lane by lane.
             var arguments = node.Children.Select(a => a is ConstantExpr c ? (Literal: ScalarLiteral(c, single), Vector: (string?)null) : (Literal: (string?)null, Vector: Named(a))).ToList();

@@ -8,7 +8,7 @@ namespace GMac.CSharp.Tests.Emit;
 
 /// <summary>
 /// Vector code: constants broadcast once at the top, vector forms where .NET has them, and functions
-/// without one (acos, tan, atan2, pow, sinh, cosh) computed lane by lane with Math's, equal to it in every lane.
+/// without one (tan, atan2, pow, sinh, cosh, acos on float lanes) computed lane by lane with Math's, equal to it in every lane.
 /// </summary>
 public sealed partial class CSharpVectorEmitter_Lanes
 {
@@ -102,7 +102,13 @@ public sealed partial class CSharpVectorEmitter_Lanes
                         MathF.Atan2(MathF.Acos((float)a), 0.5f), MathF.Sqrt((float)a), 1f / (float)b, MathF.Sinh((float)a), MathF.Cosh((float)b)]
                     : [Math.Acos(a), Math.Tan(b), Math.Atan2(a, b), Math.Pow(Math.Abs(b), a), Math.Pow(a + b, 3), Math.Atan2(Math.Acos(a), 0.5), Math.Sqrt(a), 1 / b, Math.Sinh(a), Math.Cosh(b)];
                 for (var j = 0; j < expected.Length; j++)
-                    Assert.True(expected[j].Equals(output[j * lanes + l]), $"{types[k]} lane {l} output {j}: {output[j * lanes + l]:R}, Math gives {expected[j]:R}");
+                {
+                    // acos of double vectors is vectorized (CSharpVectorEmitter_ArcCosine): within a unit in the last place.
+                    var vectorAcos = j is 0 or 5 && !kernel.IsSingle && !types[k].StartsWith("Vector<", StringComparison.Ordinal);
+                    var actual = output[j * lanes + l];
+                    Assert.True(vectorAcos ? Math.Abs(actual - expected[j]) <= 2 * Math.Abs(Math.BitIncrement(expected[j]) - expected[j]) || expected[j].Equals(actual)
+                        : expected[j].Equals(actual), $"{types[k]} lane {l} output {j}: {actual:R}, Math gives {expected[j]:R}");
+                }
             }
         }
     }

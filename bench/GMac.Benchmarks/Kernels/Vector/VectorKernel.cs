@@ -6,7 +6,8 @@ namespace GMac.Benchmarks.Kernels.Vector;
 
 /// <summary>
 /// A kernel of the suite over its batch in columns: the inputs of its scalar kernel (same seed, same
-/// items) copied into one array per double, and one array per output coefficient, in the order the
+/// items) copied into one array per double, and one array per output coefficient (each 64-byte aligned, see
+/// <see cref="AlignedColumns"/>), in the order the
 /// scalar kernel lists its outputs. The scalar kernel's generated code is the reference and the baseline.
 /// </summary>
 public abstract class VectorKernel(IGaKernel scalar)
@@ -20,6 +21,9 @@ public abstract class VectorKernel(IGaKernel scalar)
     public string MacroName => Scalar.MacroName;
 
     public int Count => Scalar.Count;
+
+    /// <summary>Input and output columns together (after <see cref="Setup"/>): the doubles a batch reads and writes per item.</summary>
+    public int ColumnCount => _inputs.Length + _timed.Length;
 
     /// <summary>Whether this kernel has vector code written by hand.</summary>
     public virtual bool HasHand => false;
@@ -66,7 +70,7 @@ public abstract class VectorKernel(IGaKernel scalar)
         }
     }
 
-    private static double[][] Columns(int count, int length) => Enumerable.Range(0, count).Select(_ => new double[length]).ToArray();
+    private static double[][] Columns(int count, int length) => AlignedColumns.Allocate(count, length);
 
     protected abstract void Generated256(double[][] i, double[][] o);
 
