@@ -42,7 +42,8 @@ internal static class InstancingCharts
         plot.Grid.XAxisStyle.MajorLineStyle.Width = 0;
         var low = Math.Min(0, values.SelectMany(v => v).Min());
         var high = Math.Max(0, values.SelectMany(v => v).Max());
-        var margin = 0.08 * Math.Max(high - low, 1e-9);
+        // All values zero: a unit range, so the axis is not degenerate (ScottPlot needs low < high).
+        var margin = 0.08 * (high > low ? high - low : 1.0);
         plot.Axes.SetLimits(-0.6, groups.Count - 0.4, low < 0 ? low - margin : 0, high + margin);
         plot.YLabel(axisLabel);
         plot.Title(title);
