@@ -73,26 +73,20 @@ public sealed class CircleThroughPointsKernel : GaKernel<Vec3Triple, ConformalCi
         double tmp11 = tmp0 * tmp7 - tmp3 * tmp4;
         double tmp12 = tmp1 * tmp7 + tmp3 * tmp5;
         double tmp13 = tmp2 * tmp7 + tmp3 * tmp6;
-        double tmp15 = tmp8;
-        double tmp16 = tmp9;
-        double tmp17 = tmp10;
-        double tmp18 = tmp10 * x.A.x + tmp8 * x.A.z - tmp9 * x.A.y;
-        double tmp19 = tmp11;
-        double tmp20 = tmp12;
-        double tmp21 = tmp13;
+        double tmp15 = tmp10 * x.A.x + tmp8 * x.A.z - tmp9 * x.A.y;
         double tmp14 = 0.5 * (x.A.z * x.A.z + x.A.y * x.A.y + x.A.x * x.A.x);
-        double tmp22 = tmp8 * tmp14 + tmp12 * x.A.x - tmp11 * x.A.y;
-        double tmp23 = tmp9 * tmp14 + tmp13 * x.A.x - tmp11 * x.A.z;
+        double tmp16 = tmp8 * tmp14 + tmp12 * x.A.x - tmp11 * x.A.y;
+        double tmp17 = tmp9 * tmp14 + tmp13 * x.A.x - tmp11 * x.A.z;
         c.E23Ni = tmp10 * tmp14 + tmp13 * x.A.y - tmp12 * x.A.z;
-        c.NoE12 = tmp15;
-        c.NoE13 = tmp16;
-        c.NoE23 = tmp17;
-        c.E123 = tmp18;
-        c.NoE1Ni = tmp19;
-        c.NoE2Ni = tmp20;
-        c.NoE3Ni = tmp21;
-        c.E12Ni = tmp22;
-        c.E13Ni = tmp23;
+        c.NoE12 = tmp8;
+        c.NoE13 = tmp9;
+        c.NoE23 = tmp10;
+        c.E123 = tmp15;
+        c.NoE1Ni = tmp11;
+        c.NoE2Ni = tmp12;
+        c.NoE3Ni = tmp13;
+        c.E12Ni = tmp16;
+        c.E13Ni = tmp17;
         #endregion
     }
 

@@ -49,19 +49,16 @@ public sealed class LineThroughPointsKernel : GaKernel<Vec3Pair, ConformalLine>
         //GMac.Bind("line.e1^e3^ni", "<l.E13Ni>");
         //GMac.Bind("line.e2^e3^ni", "<l.E23Ni>");
         double tmp0 = x.V.x - x.U.x;
-        double tmp3 = tmp0;
         double tmp1 = x.V.y - x.U.y;
-        double tmp4 = tmp1;
         double tmp2 = x.V.z - x.U.z;
-        double tmp5 = tmp2;
-        double tmp6 = tmp1 * x.U.x - tmp0 * x.U.y;
-        double tmp7 = tmp2 * x.U.x - tmp0 * x.U.z;
+        double tmp3 = tmp1 * x.U.x - tmp0 * x.U.y;
+        double tmp4 = tmp2 * x.U.x - tmp0 * x.U.z;
         l.E23Ni = tmp2 * x.U.y - tmp1 * x.U.z;
-        l.Direction.x = tmp3;
-        l.Direction.y = tmp4;
-        l.Direction.z = tmp5;
-        l.E12Ni = tmp6;
-        l.E13Ni = tmp7;
+        l.Direction.x = tmp0;
+        l.Direction.y = tmp1;
+        l.Direction.z = tmp2;
+        l.E12Ni = tmp3;
+        l.E13Ni = tmp4;
         #endregion
     }
 

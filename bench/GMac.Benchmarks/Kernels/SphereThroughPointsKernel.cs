@@ -76,15 +76,11 @@ public sealed class SphereThroughPointsKernel : GaKernel<Vec3Quad, DualSphere>
         double tmp19 = tmp17 * tmp8 - tmp11 * tmp15 - tmp12 * tmp14;
         double tmp20 = tmp17 * tmp9 - tmp11 * tmp16 - tmp13 * tmp14;
         double tmp21 = tmp10 * tmp17 + tmp13 * tmp15 - tmp12 * tmp16;
-        double tmp22 = tmp18;
-        double tmp23 = -tmp21;
-        double tmp24 = tmp20;
-        double tmp25 = -tmp19;
         s.Ni = tmp20 * q.P1.y - 0.5 * tmp18 * (q.P1.x * q.P1.x + q.P1.y * q.P1.y + q.P1.z * q.P1.z) - tmp19 * q.P1.z - tmp21 * q.P1.x;
-        s.No = tmp22;
-        s.E1 = tmp23;
-        s.E2 = tmp24;
-        s.E3 = tmp25;
+        s.No = tmp18;
+        s.E1 = -tmp21;
+        s.E2 = tmp20;
+        s.E3 = -tmp19;
         #endregion
     }
 

@@ -59,12 +59,20 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
             .ToHashSet(StringComparer.Ordinal);
         bool IsFree(string name) => !bound.Contains(name) && !options.IsNameTaken(name);
         var held = HeldOutputs(block, options.MayOverwrite);
+        // A held output whose value is a temporary assigned once (or a literal) needs no holder of
+        // its own: the temporary keeps the value, and the output is written from it (negated) at the end.
+        var assignedOnce = block.Temporaries.GroupBy(t => t.Target, StringComparer.Ordinal).Where(g => g.Count() == 1)
+            .Select(g => g.Key).ToHashSet(StringComparer.Ordinal);
+        bool Kept(Expr e) => e is ConstantExpr || e is VariableExpr v && assignedOnce.Contains(v.Name);
+        bool KeepsItsValue(AssignmentStatement o) => Kept(o.Value) || o.Value is NegateExpr n && Kept(n.Operand);
+        var holders = held.Count(o => !KeepsItsValue(o));
         var once = block.EvaluatedOnce;
-        var numbered = temps.Count + held.Count + once.Count;
+        var numbered = temps.Count + holders + once.Count;
         var prefix = CandidatePrefixes().First(p => Enumerable.Range(0, numbered).All(i => IsFree($"{p}{i}")));
         var tempName = temps.Select((t, i) => (t, i)).ToDictionary(x => x.t, x => $"{prefix}{x.i}", StringComparer.Ordinal);
-        var onceNames = once.Select((_, k) => $"{prefix}{temps.Count + held.Count + k}").ToList();
+        var onceNames = once.Select((_, k) => $"{prefix}{temps.Count + holders + k}").ToList();
         var deferred = new List<(string Target, string Value)>();
+        var heldSoFar = 0;
         var issued = Enumerable.Range(0, numbered).Select(i => $"{prefix}{i}").ToHashSet(StringComparer.Ordinal);
 
         string FreshName(string stem)
@@ -105,8 +113,11 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
             line.Clear();
             switch (s)
             {
+                case AssignmentStatement { IsOutput: true } o when held.Contains(o) && KeepsItsValue(o):
+                    deferred.Add((block.OutputTargets[o.Target].Trim(), Value(o.Value)));
+                    continue;
                 case AssignmentStatement { IsOutput: true } o when held.Contains(o):
-                    var holder = $"{prefix}{temps.Count + deferred.Count}";
+                    var holder = $"{prefix}{temps.Count + heldSoFar++}";
                     line.Append(declaredType).Append(' ').Append(holder).Append(" = ").Append(Value(o.Value)).Append(';');
                     deferred.Add((block.OutputTargets[o.Target].Trim(), holder));
                     break;
