@@ -63,7 +63,20 @@ public sealed class TranslationInvariancePass(bool differencesEverywhere = false
 
         private readonly Dictionary<string, int> _uses = BlockRewriting.UseCounts(block.Statements);
 
+        private readonly Dictionary<string, bool> _waits = new(StringComparer.Ordinal);
+
         public bool IsTemporary(string name) => _definitions.ContainsKey(name);
+
+        /// <summary>Whether the value of <paramref name="e"/> waits, through the temporaries it reads, for one that holds no polynomial (a quotient, a call).</summary>
+        public bool WaitsOnOther(Expr e) => e.DescendantsAndSelf().OfType<VariableExpr>().Any(v => WaitsOnOther(v.Name));
+
+        private bool WaitsOnOther(string name)
+        {
+            if (!_definitions.TryGetValue(name, out var value)) return false;
+            if (_waits.TryGetValue(name, out var known)) return known;
+            _waits[name] = false;
+            return _waits[name] = Of(name) is null || WaitsOnOther(value);
+        }
 
         /// <summary>
         /// The sum with the temporaries that only it reads written in place, one level: what the
@@ -102,8 +115,10 @@ public sealed class TranslationInvariancePass(bool differencesEverywhere = false
         if (points.Count < 2 || !PolynomialLifting.TryLift(sum, lifts, out var polynomial)) return null;
         if (held is not null && polynomial.Variables.Any(held.IsTemporary))
         {
-            // only where nothing but the inputs is left: otherwise the rewrite would repeat a temporary's work
-            if (PolynomialLifting.LiftThrough(sum, held.Of) is not { } through || through.Variables.Any(held.IsTemporary)) return null;
+            // only where that frees the sum from waiting on a temporary that holds no polynomial (the
+            // quotient k), and nothing but the inputs is left: otherwise the rewrite would repeat a
+            // temporary's work, or merely rearrange a sum that waits on nothing
+            if (!held.WaitsOnOther(sum) || PolynomialLifting.LiftThrough(sum, held.Of) is not { } through || through.Variables.Any(held.IsTemporary)) return null;
             polynomial = through;
             sum = held.WithOwnTemporaries(sum);
         }
