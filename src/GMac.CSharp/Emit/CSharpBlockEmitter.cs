@@ -62,7 +62,7 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
         // Either the outputs that may overwrite inputs still to be read are held to the end, or
         // those inputs are read into locals first and every output is written where it is
         // computed. The second is measured faster (the line through two points 1.15 of hand with
-        // its stores all at the end, 1.0 in place; skew lines 1.10 and 1.01). Across a math call
+        // its stores all at the end, 1.0 in place, the instructions otherwise the same). Across a math call
         // locals are spilled (every vector register is caller-saved on the System V ABI): code
         // that calls takes the copies only where they are no more locals than the held outputs.
         var copied = CopiedInputs(block, options.MayOverwrite);
