@@ -12,6 +12,8 @@ internal static class Program
     {
         if (args.Length > 0 && args[0] == "report")
             return ReportCommand.Run(args[1..], Console.Out, Console.Error);
+        if (args.Length > 0 && args[0] == "kernels")
+            return KernelsCommand.Run(args[1..], Console.Out, Console.Error);
         if (args.Length > 0 && args[0] == "generation")
             return Generation.GenerationCommand.Run(args[1..], Console.Out, Console.Error);
 

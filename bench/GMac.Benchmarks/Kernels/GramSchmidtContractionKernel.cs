@@ -47,24 +47,22 @@ public sealed class GramSchmidtContractionKernel : GaKernel<Vec3Triple, Vec3Trip
         //GMac.Bind("w1", "Vector3D", "w.A");
         //GMac.Bind("w2", "Vector3D", "w.B");
         //GMac.Bind("w3", "Vector3D", "w.C");
-        double tmp0 = v.A.y * v.B.x - v.A.x * v.B.y;
-        double tmp1 = v.A.x * v.B.z - v.A.z * v.B.x;
-        double tmp2 = v.A.z * v.B.y - v.A.y * v.B.z;
-        double tmp3 = -(tmp0 * v.C.z) - tmp2 * v.C.x - tmp1 * v.C.y;
         double tmp4 = v.A.x;
         double tmp5 = v.A.y;
         double tmp6 = v.A.z;
-        double tmp7 = tmp0 * v.A.y - tmp1 * v.A.z;
-        double tmp8 = tmp2 * v.A.z - tmp0 * v.A.x;
-        w.B.z = tmp1 * v.A.x - tmp2 * v.A.y;
-        w.C.x = tmp2 * tmp3;
-        w.C.y = tmp1 * tmp3;
-        w.C.z = tmp0 * tmp3;
+        double tmp0 = tmp5 * v.B.x - tmp4 * v.B.y;
+        double tmp1 = tmp4 * v.B.z - tmp6 * v.B.x;
+        double tmp2 = tmp6 * v.B.y - tmp5 * v.B.z;
+        double tmp3 = -(tmp0 * v.C.z) - tmp2 * v.C.x - tmp1 * v.C.y;
         w.A.x = tmp4;
         w.A.y = tmp5;
         w.A.z = tmp6;
-        w.B.x = tmp7;
-        w.B.y = tmp8;
+        w.B.x = tmp0 * tmp5 - tmp1 * tmp6;
+        w.B.y = tmp2 * tmp6 - tmp0 * tmp4;
+        w.B.z = tmp1 * tmp4 - tmp2 * tmp5;
+        w.C.x = tmp2 * tmp3;
+        w.C.y = tmp1 * tmp3;
+        w.C.z = tmp0 * tmp3;
         #endregion
     }
 

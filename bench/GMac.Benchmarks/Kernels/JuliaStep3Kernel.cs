@@ -46,11 +46,12 @@ public sealed class JuliaStep3Kernel : GaKernel<Vec2Pair, Vec2>
         //GMac.Bind("c.e2", "<j.C.y>");
         //GMac.Bind("y.e1", "<y.x>");
         //GMac.Bind("y.e2", "<y.y>");
-        double tmp0 = j.X.y * j.X.y;
+        double tmp2 = j.X.y;
+        double tmp3 = j.C.y;
+        double tmp0 = tmp2 * tmp2;
         double tmp1 = j.X.x * j.X.x;
-        double tmp2 = j.X.x * (tmp1 - 3.0 * tmp0) + j.C.x;
-        y.y = j.X.y * (3.0 * tmp1 - tmp0) + j.C.y;
-        y.x = tmp2;
+        y.x = j.X.x * (tmp1 - 3.0 * tmp0) + j.C.x;
+        y.y = tmp2 * (3.0 * tmp1 - tmp0) + tmp3;
         #endregion
     }
 

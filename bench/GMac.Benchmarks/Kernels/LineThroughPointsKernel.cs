@@ -48,20 +48,20 @@ public sealed class LineThroughPointsKernel : GaKernel<Vec3Pair, ConformalLine>
         //GMac.Bind("line.e1^e2^ni", "<l.E12Ni>");
         //GMac.Bind("line.e1^e3^ni", "<l.E13Ni>");
         //GMac.Bind("line.e2^e3^ni", "<l.E23Ni>");
-        double tmp0 = x.V.x - x.U.x;
-        double tmp3 = tmp0;
-        double tmp1 = x.V.y - x.U.y;
-        double tmp4 = tmp1;
-        double tmp2 = x.V.z - x.U.z;
-        double tmp5 = tmp2;
-        double tmp6 = tmp1 * x.U.x - tmp0 * x.U.y;
-        double tmp7 = tmp2 * x.U.x - tmp0 * x.U.z;
-        l.E23Ni = tmp2 * x.U.y - tmp1 * x.U.z;
-        l.Direction.x = tmp3;
-        l.Direction.y = tmp4;
-        l.Direction.z = tmp5;
-        l.E12Ni = tmp6;
-        l.E13Ni = tmp7;
+        double tmp3 = x.U.x;
+        double tmp4 = x.U.y;
+        double tmp5 = x.U.z;
+        double tmp6 = x.V.y;
+        double tmp7 = x.V.z;
+        double tmp0 = x.V.x - tmp3;
+        l.Direction.x = tmp0;
+        double tmp1 = tmp6 - tmp4;
+        l.Direction.y = tmp1;
+        double tmp2 = tmp7 - tmp5;
+        l.Direction.z = tmp2;
+        l.E12Ni = tmp1 * tmp3 - tmp0 * tmp4;
+        l.E13Ni = tmp2 * tmp3 - tmp0 * tmp5;
+        l.E23Ni = tmp2 * tmp4 - tmp1 * tmp5;
         #endregion
     }
 

@@ -45,11 +45,15 @@ public sealed class NormalToVectorsKernel : GaKernel<Vec3Pair, Vec3>
         //GMac.Bind("u", "Vector3D", "x.U");
         //GMac.Bind("v", "Vector3D", "x.V");
         //GMac.Bind("w", "Vector3D", "w");
-        double tmp0 = x.U.y * x.V.z - x.U.z * x.V.y;
-        double tmp1 = x.U.z * x.V.x - x.U.x * x.V.z;
-        w.z = x.U.x * x.V.y - x.U.y * x.V.x;
-        w.x = tmp0;
-        w.y = tmp1;
+        double tmp0 = x.U.x;
+        double tmp1 = x.U.y;
+        double tmp2 = x.U.z;
+        double tmp3 = x.V.x;
+        double tmp4 = x.V.y;
+        double tmp5 = x.V.z;
+        w.x = tmp1 * tmp5 - tmp2 * tmp4;
+        w.y = tmp2 * tmp3 - tmp0 * tmp5;
+        w.z = tmp0 * tmp4 - tmp1 * tmp3;
         #endregion
     }
 

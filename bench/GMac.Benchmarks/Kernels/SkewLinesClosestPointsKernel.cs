@@ -51,19 +51,21 @@ public sealed class SkewLinesClosestPointsKernel : GaKernel<LinePair, LineParame
         //GMac.Bind("d2", "Vector3D", "l.D2");
         //GMac.Bind("t1.1", "<t.T1>");
         //GMac.Bind("t2.1", "<t.T2>");
+        double tmp10 = l.D1.x;
+        double tmp11 = l.D1.y;
+        double tmp12 = l.D1.z;
         double tmp0 = l.P2.x - l.P1.x;
         double tmp1 = l.P2.y - l.P1.y;
         double tmp2 = l.P2.z - l.P1.z;
-        double tmp3 = l.D2.y * l.D1.x - l.D1.y * l.D2.x;
-        double tmp4 = l.D2.z * l.D1.x - l.D1.z * l.D2.x;
-        double tmp5 = l.D2.z * l.D1.y - l.D2.y * l.D1.z;
+        double tmp3 = l.D2.y * tmp10 - tmp11 * l.D2.x;
+        double tmp4 = l.D2.z * tmp10 - tmp12 * l.D2.x;
+        double tmp5 = l.D2.z * tmp11 - l.D2.y * tmp12;
         double tmp6 = 1.0 / (tmp3 * tmp3 + tmp4 * tmp4 + tmp5 * tmp5);
         double tmp7 = tmp0 * tmp3 - tmp5 * tmp2;
         double tmp8 = tmp2 * tmp4 + tmp1 * tmp3;
         double tmp9 = tmp5 * tmp1 + tmp0 * tmp4;
-        double tmp10 = tmp6 * (l.D2.y * tmp7 + l.D2.z * tmp9 - l.D2.x * tmp8);
-        t.T2 = tmp6 * (l.D1.y * tmp7 + l.D1.z * tmp9 - l.D1.x * tmp8);
-        t.T1 = tmp10;
+        t.T1 = tmp6 * (l.D2.y * tmp7 + l.D2.z * tmp9 - l.D2.x * tmp8);
+        t.T2 = tmp6 * (tmp11 * tmp7 + tmp12 * tmp9 - tmp10 * tmp8);
         #endregion
     }
 

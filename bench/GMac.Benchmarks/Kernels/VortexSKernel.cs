@@ -47,12 +47,17 @@ public sealed class VortexSKernel : GaKernel<VortexInput, Vec3>
         //GMac.Bind("omega.1", "<x.Omega>");
         //GMac.Bind("gamma.1", "<x.Gamma>");
         //GMac.Bind("v", "Vector3D", "v");
-        double tmp0 = x.Omega * (x.A.z * x.P.z + x.A.y * x.P.y + x.A.x * x.P.x) / (x.A.x * x.A.x + x.A.y * x.A.y + x.A.z * x.A.z);
-        double tmp1 = x.A.x * tmp0 + x.Gamma * (x.P.z * x.A.y - x.P.y * x.A.z);
-        double tmp2 = x.A.y * tmp0 + x.Gamma * (x.P.x * x.A.z - x.P.z * x.A.x);
-        v.z = x.A.z * tmp0 + x.Gamma * (x.P.y * x.A.x - x.P.x * x.A.y);
-        v.x = tmp1;
-        v.y = tmp2;
+        double tmp1 = x.P.x;
+        double tmp2 = x.P.y;
+        double tmp3 = x.P.z;
+        double tmp4 = x.A.x;
+        double tmp5 = x.A.y;
+        double tmp6 = x.A.z;
+        double tmp7 = x.Gamma;
+        double tmp0 = x.Omega * (tmp6 * tmp3 + tmp5 * tmp2 + tmp4 * tmp1) / (tmp4 * tmp4 + tmp5 * tmp5 + tmp6 * tmp6);
+        v.x = tmp4 * tmp0 + tmp7 * (tmp3 * tmp5 - tmp2 * tmp6);
+        v.y = tmp5 * tmp0 + tmp7 * (tmp1 * tmp6 - tmp3 * tmp4);
+        v.z = tmp6 * tmp0 + tmp7 * (tmp2 * tmp4 - tmp1 * tmp5);
         #endregion
     }
 

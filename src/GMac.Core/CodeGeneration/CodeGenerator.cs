@@ -144,10 +144,16 @@ public static class CodeGenerator
         var errors = candidates.Select(c => AccuracyProbe.Error(c.Block, relations)).ToList();
         var anotherIsAccurate = errors.Exists(e => e <= AccuracyProbe.Threshold);
         var positions = candidates[0].Block.Points.Any(p => p.IsPosition);
+        if (!errors.Exists(e => e > AccuracyProbe.Threshold)) return;
         for (var i = built.Count - 1; i >= 0; i--)
         {
-            if (errors[i] is not { } e || e <= AccuracyProbe.Threshold) continue;
-            var variant = Optimizer.Reduce(built[i], differencesEverywhere: true);
+            if (errors[i] is not { } e) continue;
+            // An accurate form is looked at as it is, for values it computes from intermediate
+            // results that are polynomials of the points alone (v1 × w2 = v1 × v2): over the
+            // differences they need not wait for those results.
+            var variant = e <= AccuracyProbe.Threshold
+                ? Optimizer.Reduce(candidates[i].Block, differencesEverywhere: true)
+                : Optimizer.Reduce(built[i], differencesEverywhere: true);
             if (candidates.Exists(c => c.Block.HasSameStatements(variant))) continue;
             if (anotherIsAccurate || positions || variant.Statistics().Cost <= candidates[i].Block.Statistics().Cost) candidates.Add((variant, candidates[i].Form));
         }

@@ -42,7 +42,6 @@ public sealed class GramSchmidtRejectionVectorKernel() : VectorKernel(new GramSc
         ref double span15 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)WC.x);
         ref double span16 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)WC.y);
         ref double span17 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)WC.z);
-        var tmpC0 = Vector256.Create(1.0);
         int k = 0;
         for (; k <= count0 - Vector256<double>.Count; k += Vector256<double>.Count)
         {
@@ -55,26 +54,23 @@ public sealed class GramSchmidtRejectionVectorKernel() : VectorKernel(new GramSc
             var item6 = Vector256.LoadUnsafe(ref span6, (nuint)k);
             var item7 = Vector256.LoadUnsafe(ref span7, (nuint)k);
             var item8 = Vector256.LoadUnsafe(ref span8, (nuint)k);
-            var tmp0 = item4 - item1;
-            var tmp1 = item3 - item0;
-            var tmp2 = tmp0 * item0 - tmp1 * item1;
-            var tmp3 = item5 - item2;
-            var tmp4 = tmp1 * item2 - tmp3 * item0;
-            var tmp5 = tmp3 * item1 - tmp0 * item2;
-            var tmp6 = tmpC0 / (item0 * item0 + item1 * item1 + item2 * item2);
-            var tmp7 = item0 * tmp6;
-            var tmp8 = item1 * tmp6;
-            var tmp9 = item2 * tmp6;
+            var tmp0 = (item0 * item3 + item1 * item4 + item2 * item5) / (item2 * item2 + item0 * item0 + item1 * item1);
+            var tmp1 = item4 - item1;
+            var tmp2 = item3 - item0;
+            var tmp3 = tmp1 * item0 - tmp2 * item1;
+            var tmp4 = item5 - item2;
+            var tmp5 = tmp2 * item2 - tmp4 * item0;
+            var tmp6 = tmp4 * item1 - tmp1 * item2;
             var result0 = item0;
             var result1 = item1;
             var result2 = item2;
-            var result3 = tmp4 * tmp9 - tmp2 * tmp8;
-            var result4 = tmp2 * tmp7 - tmp5 * tmp9;
-            var result5 = tmp5 * tmp8 - tmp4 * tmp7;
-            var tmp10 = ((item7 - item1) * tmp4 + (item6 - item0) * tmp5 + (item8 - item2) * tmp2) / (tmp2 * tmp2 + tmp4 * tmp4 + tmp5 * tmp5);
-            var result6 = tmp5 * tmp10;
-            var result7 = tmp4 * tmp10;
-            var result8 = tmp2 * tmp10;
+            var result3 = item3 - item0 * tmp0;
+            var result4 = item4 - item1 * tmp0;
+            var result5 = item5 - item2 * tmp0;
+            var tmp7 = (item7 * tmp5 + item6 * tmp6 + item8 * tmp3) / (tmp3 * tmp3 + tmp5 * tmp5 + tmp6 * tmp6);
+            var result6 = tmp6 * tmp7;
+            var result7 = tmp5 * tmp7;
+            var result8 = tmp3 * tmp7;
             result0.StoreUnsafe(ref span9, (nuint)k);
             result1.StoreUnsafe(ref span10, (nuint)k);
             result2.StoreUnsafe(ref span11, (nuint)k);
@@ -87,26 +83,23 @@ public sealed class GramSchmidtRejectionVectorKernel() : VectorKernel(new GramSc
         }
         for (; k < count0; k++)
         {
-            double tmp0 = B.y[k] - A.y[k];
-            double tmp1 = B.x[k] - A.x[k];
-            double tmp2 = tmp0 * A.x[k] - tmp1 * A.y[k];
-            double tmp3 = B.z[k] - A.z[k];
-            double tmp4 = tmp1 * A.z[k] - tmp3 * A.x[k];
-            double tmp5 = tmp3 * A.y[k] - tmp0 * A.z[k];
-            double tmp6 = 1.0 / (A.x[k] * A.x[k] + A.y[k] * A.y[k] + A.z[k] * A.z[k]);
-            double tmp7 = A.x[k] * tmp6;
-            double tmp8 = A.y[k] * tmp6;
-            double tmp9 = A.z[k] * tmp6;
+            double tmp0 = (A.x[k] * B.x[k] + A.y[k] * B.y[k] + A.z[k] * B.z[k]) / (A.z[k] * A.z[k] + A.x[k] * A.x[k] + A.y[k] * A.y[k]);
+            double tmp1 = B.y[k] - A.y[k];
+            double tmp2 = B.x[k] - A.x[k];
+            double tmp3 = tmp1 * A.x[k] - tmp2 * A.y[k];
+            double tmp4 = B.z[k] - A.z[k];
+            double tmp5 = tmp2 * A.z[k] - tmp4 * A.x[k];
+            double tmp6 = tmp4 * A.y[k] - tmp1 * A.z[k];
             WA.x[k] = A.x[k];
             WA.y[k] = A.y[k];
             WA.z[k] = A.z[k];
-            WB.x[k] = tmp4 * tmp9 - tmp2 * tmp8;
-            WB.y[k] = tmp2 * tmp7 - tmp5 * tmp9;
-            WB.z[k] = tmp5 * tmp8 - tmp4 * tmp7;
-            double tmp10 = ((C.y[k] - A.y[k]) * tmp4 + (C.x[k] - A.x[k]) * tmp5 + (C.z[k] - A.z[k]) * tmp2) / (tmp2 * tmp2 + tmp4 * tmp4 + tmp5 * tmp5);
-            WC.x[k] = tmp5 * tmp10;
-            WC.y[k] = tmp4 * tmp10;
-            WC.z[k] = tmp2 * tmp10;
+            WB.x[k] = B.x[k] - A.x[k] * tmp0;
+            WB.y[k] = B.y[k] - A.y[k] * tmp0;
+            WB.z[k] = B.z[k] - A.z[k] * tmp0;
+            double tmp7 = (C.y[k] * tmp5 + C.x[k] * tmp6 + C.z[k] * tmp3) / (tmp3 * tmp3 + tmp5 * tmp5 + tmp6 * tmp6);
+            WC.x[k] = tmp6 * tmp7;
+            WC.y[k] = tmp5 * tmp7;
+            WC.z[k] = tmp3 * tmp7;
         }
         #endregion
     }
@@ -148,7 +141,6 @@ public sealed class GramSchmidtRejectionVectorKernel() : VectorKernel(new GramSc
         ref double span15 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)WC.x);
         ref double span16 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)WC.y);
         ref double span17 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)WC.z);
-        var tmpC0 = Vector512.Create(1.0);
         int k = 0;
         for (; k <= count0 - Vector512<double>.Count; k += Vector512<double>.Count)
         {
@@ -161,26 +153,23 @@ public sealed class GramSchmidtRejectionVectorKernel() : VectorKernel(new GramSc
             var item6 = Vector512.LoadUnsafe(ref span6, (nuint)k);
             var item7 = Vector512.LoadUnsafe(ref span7, (nuint)k);
             var item8 = Vector512.LoadUnsafe(ref span8, (nuint)k);
-            var tmp0 = item4 - item1;
-            var tmp1 = item3 - item0;
-            var tmp2 = tmp0 * item0 - tmp1 * item1;
-            var tmp3 = item5 - item2;
-            var tmp4 = tmp1 * item2 - tmp3 * item0;
-            var tmp5 = tmp3 * item1 - tmp0 * item2;
-            var tmp6 = tmpC0 / (item0 * item0 + item1 * item1 + item2 * item2);
-            var tmp7 = item0 * tmp6;
-            var tmp8 = item1 * tmp6;
-            var tmp9 = item2 * tmp6;
+            var tmp0 = (item0 * item3 + item1 * item4 + item2 * item5) / (item2 * item2 + item0 * item0 + item1 * item1);
+            var tmp1 = item4 - item1;
+            var tmp2 = item3 - item0;
+            var tmp3 = tmp1 * item0 - tmp2 * item1;
+            var tmp4 = item5 - item2;
+            var tmp5 = tmp2 * item2 - tmp4 * item0;
+            var tmp6 = tmp4 * item1 - tmp1 * item2;
             var result0 = item0;
             var result1 = item1;
             var result2 = item2;
-            var result3 = tmp4 * tmp9 - tmp2 * tmp8;
-            var result4 = tmp2 * tmp7 - tmp5 * tmp9;
-            var result5 = tmp5 * tmp8 - tmp4 * tmp7;
-            var tmp10 = ((item7 - item1) * tmp4 + (item6 - item0) * tmp5 + (item8 - item2) * tmp2) / (tmp2 * tmp2 + tmp4 * tmp4 + tmp5 * tmp5);
-            var result6 = tmp5 * tmp10;
-            var result7 = tmp4 * tmp10;
-            var result8 = tmp2 * tmp10;
+            var result3 = item3 - item0 * tmp0;
+            var result4 = item4 - item1 * tmp0;
+            var result5 = item5 - item2 * tmp0;
+            var tmp7 = (item7 * tmp5 + item6 * tmp6 + item8 * tmp3) / (tmp3 * tmp3 + tmp5 * tmp5 + tmp6 * tmp6);
+            var result6 = tmp6 * tmp7;
+            var result7 = tmp5 * tmp7;
+            var result8 = tmp3 * tmp7;
             result0.StoreUnsafe(ref span9, (nuint)k);
             result1.StoreUnsafe(ref span10, (nuint)k);
             result2.StoreUnsafe(ref span11, (nuint)k);
@@ -193,26 +182,23 @@ public sealed class GramSchmidtRejectionVectorKernel() : VectorKernel(new GramSc
         }
         for (; k < count0; k++)
         {
-            double tmp0 = B.y[k] - A.y[k];
-            double tmp1 = B.x[k] - A.x[k];
-            double tmp2 = tmp0 * A.x[k] - tmp1 * A.y[k];
-            double tmp3 = B.z[k] - A.z[k];
-            double tmp4 = tmp1 * A.z[k] - tmp3 * A.x[k];
-            double tmp5 = tmp3 * A.y[k] - tmp0 * A.z[k];
-            double tmp6 = 1.0 / (A.x[k] * A.x[k] + A.y[k] * A.y[k] + A.z[k] * A.z[k]);
-            double tmp7 = A.x[k] * tmp6;
-            double tmp8 = A.y[k] * tmp6;
-            double tmp9 = A.z[k] * tmp6;
+            double tmp0 = (A.x[k] * B.x[k] + A.y[k] * B.y[k] + A.z[k] * B.z[k]) / (A.z[k] * A.z[k] + A.x[k] * A.x[k] + A.y[k] * A.y[k]);
+            double tmp1 = B.y[k] - A.y[k];
+            double tmp2 = B.x[k] - A.x[k];
+            double tmp3 = tmp1 * A.x[k] - tmp2 * A.y[k];
+            double tmp4 = B.z[k] - A.z[k];
+            double tmp5 = tmp2 * A.z[k] - tmp4 * A.x[k];
+            double tmp6 = tmp4 * A.y[k] - tmp1 * A.z[k];
             WA.x[k] = A.x[k];
             WA.y[k] = A.y[k];
             WA.z[k] = A.z[k];
-            WB.x[k] = tmp4 * tmp9 - tmp2 * tmp8;
-            WB.y[k] = tmp2 * tmp7 - tmp5 * tmp9;
-            WB.z[k] = tmp5 * tmp8 - tmp4 * tmp7;
-            double tmp10 = ((C.y[k] - A.y[k]) * tmp4 + (C.x[k] - A.x[k]) * tmp5 + (C.z[k] - A.z[k]) * tmp2) / (tmp2 * tmp2 + tmp4 * tmp4 + tmp5 * tmp5);
-            WC.x[k] = tmp5 * tmp10;
-            WC.y[k] = tmp4 * tmp10;
-            WC.z[k] = tmp2 * tmp10;
+            WB.x[k] = B.x[k] - A.x[k] * tmp0;
+            WB.y[k] = B.y[k] - A.y[k] * tmp0;
+            WB.z[k] = B.z[k] - A.z[k] * tmp0;
+            double tmp7 = (C.y[k] * tmp5 + C.x[k] * tmp6 + C.z[k] * tmp3) / (tmp3 * tmp3 + tmp5 * tmp5 + tmp6 * tmp6);
+            WC.x[k] = tmp6 * tmp7;
+            WC.y[k] = tmp5 * tmp7;
+            WC.z[k] = tmp3 * tmp7;
         }
         #endregion
     }

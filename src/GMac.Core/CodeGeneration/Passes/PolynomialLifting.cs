@@ -25,6 +25,33 @@ internal static class PolynomialLifting
         return true;
     }
 
+    /// <summary>
+    /// Lifts <paramref name="e"/> with each variable that <paramref name="resolve"/> answers for
+    /// replaced by that polynomial (a temporary by the polynomial it holds); other variables stay
+    /// as they are. Null where <paramref name="e"/> is not a polynomial of those.
+    /// </summary>
+    public static Scalar? LiftThrough(Expr e, Func<string, Scalar?> resolve) => e switch
+    {
+        VariableExpr v => resolve(v.Name) ?? Scalar.Variable(v.Name),
+        ConstantExpr { Exact: { } r } => Scalar.Constant(r),
+        NegateExpr n => LiftThrough(n.Operand, resolve) is { } operand ? -operand : null,
+        PowerExpr { Exponent: > 0 } p => LiftThrough(p.Base, resolve) is { } b ? Scalar.IntegerPower(b, p.Exponent) : null,
+        SumExpr or ProductExpr => Combine(e, resolve),
+        _ => null,
+    };
+
+    private static Scalar? Combine(Expr e, Func<string, Scalar?> resolve)
+    {
+        var isSum = e is SumExpr;
+        var result = isSum ? Scalar.Zero : Scalar.One;
+        foreach (var c in e.Children)
+        {
+            if (LiftThrough(c, resolve) is not { } lifted) return null;
+            result = isSum ? result + lifted : result * lifted;
+        }
+        return result;
+    }
+
     private static Scalar? Lift(Expr e, Dictionary<Expr, Scalar?>? known)
     {
         if (e.IsLeaf || known is null) return LiftNode(e, known);

@@ -40,10 +40,60 @@ public sealed class TranslationInvariancePass(bool differencesEverywhere = false
         var lifts = new Dictionary<Expr, Scalar?>(ReferenceEqualityComparer.Instance);
         var groups = new Dictionary<Scalar, List<List<string>>>();
         var points = differencesEverywhere ? block.Points : [];
+        var held = points.Count < 2 ? null : new HeldPolynomials(block);
         return BlockRewriting.MapExpressions(block, e => BlockRewriting.ReplaceNodes(e, node =>
             node is SumExpr && node.Size <= MaxNodes
-                ? Rewrite(node, inputOrder, lifts, groups) ?? Covariant(node, points, lifts)
+                ? Rewrite(node, inputOrder, lifts, groups) ?? Covariant(node, points, lifts, held)
                 : null));
+    }
+
+    /// <summary>Beyond this many terms a temporary's polynomial is not looked through.</summary>
+    private const int MaxHeldTerms = 64;
+
+    /// <summary>
+    /// The polynomials of the inputs that the block's temporaries hold, where they hold one, with
+    /// the temporaries that hold anything else (a quotient, a call) left as variables of their own.
+    /// </summary>
+    private sealed class HeldPolynomials(CodeBlock block)
+    {
+        private readonly Dictionary<string, Expr> _definitions = block.Temporaries
+            .GroupBy(t => t.Target, StringComparer.Ordinal).Where(g => g.Count() == 1)
+            .ToDictionary(g => g.Key, g => g.Single().Value, StringComparer.Ordinal);
+        private readonly Dictionary<string, Scalar?> _lifted = new(StringComparer.Ordinal);
+
+        private readonly Dictionary<string, int> _uses = BlockRewriting.UseCounts(block.Statements);
+
+        private readonly Dictionary<string, bool> _waits = new(StringComparer.Ordinal);
+
+        public bool IsTemporary(string name) => _definitions.ContainsKey(name);
+
+        /// <summary>Whether the value of <paramref name="e"/> waits, through the temporaries it reads, for one that holds no polynomial (a quotient, a call).</summary>
+        public bool WaitsOnOther(Expr e) => e.DescendantsAndSelf().OfType<VariableExpr>().Any(v => WaitsOnOther(v.Name));
+
+        private bool WaitsOnOther(string name)
+        {
+            if (!_definitions.TryGetValue(name, out var value)) return false;
+            if (_waits.TryGetValue(name, out var known)) return known;
+            _waits[name] = false;
+            return _waits[name] = Of(name) is null || WaitsOnOther(value);
+        }
+
+        /// <summary>
+        /// The sum with the temporaries that only it reads written in place, one level: what the
+        /// sum really costs where a product of it was split off (bp_in2 * t1 − pair with pair = bp_in1 * t2).
+        /// </summary>
+        public Expr WithOwnTemporaries(Expr sum) => BlockRewriting.Substitute(sum, sum.DescendantsAndSelf().OfType<VariableExpr>()
+            .Where(v => _uses.GetValueOrDefault(v.Name) == 1 && _definitions.ContainsKey(v.Name)).DistinctBy(v => v.Name)
+            .ToDictionary(v => v.Name, v => _definitions[v.Name], StringComparer.Ordinal));
+
+        public Scalar? Of(string name)
+        {
+            if (!_definitions.TryGetValue(name, out var value)) return null;
+            if (_lifted.TryGetValue(name, out var known)) return known;
+            _lifted[name] = null; // single assignment: no cycle, but guard anyway
+            var lifted = value.Size <= MaxNodes ? PolynomialLifting.LiftThrough(value, Of) : null;
+            return _lifted[name] = lifted is { Terms.Count: <= MaxHeldTerms } ? lifted : null;
+        }
     }
 
     /// <summary>
@@ -51,9 +101,28 @@ public sealed class TranslationInvariancePass(bool differencesEverywhere = false
     /// layout of points is tried with every point it reads as the anchor; the cheapest form whose
     /// anchor-only part (the value with every point at the anchor) is at most linear is kept.
     /// </summary>
-    internal static Expr? Covariant(Expr sum, IReadOnlyList<InputPoint> points, Dictionary<Expr, Scalar?>? lifts = null)
+    internal static Expr? Covariant(Expr sum, IReadOnlyList<InputPoint> points, Dictionary<Expr, Scalar?>? lifts = null) =>
+        Covariant(sum, points, lifts, null);
+
+    /// <param name="held">
+    /// The polynomials the block's temporaries hold: a sum over temporaries that is a polynomial of
+    /// the points alone once they are looked through (v1 × w2 with w2 = v2 − k v1 is v1 × v2, the
+    /// k v1 × v1 cancelling) is written over the points' differences directly, and no longer waits
+    /// for the temporaries (the division of k).
+    /// </param>
+    private static Expr? Covariant(Expr sum, IReadOnlyList<InputPoint> points, Dictionary<Expr, Scalar?>? lifts, HeldPolynomials? held)
     {
-        if (points.Count < 2 || !PolynomialLifting.TryLift(sum, lifts, out var polynomial) || !HasDegreeTwo(polynomial)) return null;
+        if (points.Count < 2 || !PolynomialLifting.TryLift(sum, lifts, out var polynomial)) return null;
+        if (held is not null && polynomial.Variables.Any(held.IsTemporary))
+        {
+            // only where that frees the sum from waiting on a temporary that holds no polynomial (the
+            // quotient k), and nothing but the inputs is left: otherwise the rewrite would repeat a
+            // temporary's work, or merely rearrange a sum that waits on nothing
+            if (!held.WaitsOnOther(sum) || PolynomialLifting.LiftThrough(sum, held.Of) is not { } through || through.Variables.Any(held.IsTemporary)) return null;
+            polynomial = through;
+            sum = held.WithOwnTemporaries(sum);
+        }
+        if (!HasDegreeTwo(polynomial)) return null;
         var variables = polynomial.Variables;
         if (variables.Count > MaxVariables || variables.Any(v => v.StartsWith(DifferencePrefix, StringComparison.Ordinal))) return null;
         var original = Cost(sum);
