@@ -7,8 +7,8 @@ namespace RayTracer.Acceleration;
 
 /// <summary>
 /// Top-down binned SAH build of a binary tree. Each primitive's box travels with it through the
-/// partitions (min and max as two single-precision vectors, rounded outward from the double box, and
-/// its index alongside), so binning reads 32 bytes per primitive in order; one pass bins all three axes at once, and the partition pass also
+/// partitions (min and max as two single-precision vectors, rounded outward from the double box, its
+/// index in the spare lane), so binning reads and partitioning moves 32 bytes per primitive; one pass bins all three axes at once, and the partition pass also
 /// gathers the children's boxes and centroid boxes. Subtrees above a size threshold are built in
 /// parallel, their node pairs taken from a shared counter. The loops are compiled fully optimized
 /// at once (a build runs each of them only a few times, too few for tiered compilation to get there).
@@ -28,9 +28,7 @@ internal sealed class BvhBuilder
     private const double TraversalCost = 1.0;
     private const double IntersectionCost = 1.0;
 
-    private readonly Vector128<float>[] _min;
-    private readonly Vector128<float>[] _max;
-    private readonly int[] _index;
+    private readonly PrimitiveReference[] _refs;
     private readonly BvhNode[] _nodes;
     private readonly int _maxLeafSize;
     private readonly int _maxDepth;
@@ -40,21 +38,20 @@ internal sealed class BvhBuilder
     private BvhBuilder(BoundingBox[] bounds, int maxLeafSize, int maxDepth)
     {
         int n = bounds.Length;
-        _min = new Vector128<float>[n];
-        _max = new Vector128<float>[n];
-        _index = new int[n];
+        // Written before read: no need to zero them (nodes past the count are never touched).
+        _refs = GC.AllocateUninitializedArray<PrimitiveReference>(n);
         ChunkedLoop.For(n, ChunkSize, (start, end) =>
         {
             for (int i = start; i < end; i++)
             {
                 ref readonly var b = ref bounds[i];
-                _min[i] = Vector128.Create(Down(b.Min.x), Down(b.Min.y), Down(b.Min.z), 0);
-                _max[i] = Vector128.Create(Up(b.Max.x), Up(b.Max.y), Up(b.Max.z), 0);
-                _index[i] = i;
+                _refs[i] = new PrimitiveReference(
+                    Vector128.Create(Down(b.Min.x), Down(b.Min.y), Down(b.Min.z), BitConverter.Int32BitsToSingle(i)),
+                    Vector128.Create(Up(b.Max.x), Up(b.Max.y), Up(b.Max.z), 0));
             }
         });
 
-        _nodes = new BvhNode[Math.Max(1, 2 * n - 1)];
+        _nodes = GC.AllocateUninitializedArray<BvhNode>(Math.Max(1, 2 * n - 1));
         _maxLeafSize = maxLeafSize;
         _maxDepth = maxDepth;
     }
@@ -78,7 +75,14 @@ internal sealed class BvhBuilder
 
         builder._nodeCount = 1;
         builder.Subtree(0, 0, n, root.Box, root.Centroids, 0);
-        order = builder._index;
+        var refs = builder._refs;
+        var positions = GC.AllocateUninitializedArray<int>(n);
+        ChunkedLoop.For(n, ChunkSize, (start, end) =>
+        {
+            for (int i = start; i < end; i++)
+                positions[i] = refs[i].Index;
+        });
+        order = positions;
         nodeCount = builder._nodeCount;
 
         // Nodes past the count are never referred to; the array is returned as is rather than copied.
@@ -175,10 +179,11 @@ internal sealed class BvhBuilder
     {
         var box = Empty;
         var centroids = Empty;
+        var refs = _refs;
         for (int i = start; i < end; i++)
         {
-            box.Include(_min[i], _max[i]);
-            centroids.Include(_min[i] + _max[i]);
+            box.Include(refs[i].Min, refs[i].Max);
+            centroids.Include(refs[i].Centroid);
         }
 
         return (box, centroids);
@@ -274,14 +279,19 @@ internal sealed class BvhBuilder
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void Bin(int start, int end, Vector128<float> lo, Vector128<float> scale, int binCount, Span<Box> bins, Span<int> counts)
     {
-        bins.Fill(Empty);
-        counts.Clear();
+        for (int axis = 0; axis < 3; axis++)
+        {
+            bins.Slice(axis * BinCount, binCount).Fill(Empty);
+            counts.Slice(axis * BinCount, binCount).Clear();
+        }
+
         var last = Vector128.Create(binCount - 1);
+        var refs = _refs;
         for (int i = start; i < end; i++)
         {
-            var min = _min[i];
-            var max = _max[i];
-            var b = BinsOf(min + max, lo, scale, last);
+            var min = refs[i].Min;
+            var max = refs[i].Max;
+            var b = BinsOf(refs[i].Centroid, lo, scale, last);
             int bx = b.GetElement(0), by = BinCount + b.GetElement(1), bz = 2 * BinCount + b.GetElement(2);
             bins[bx].Include(min, max);
             counts[bx]++;
@@ -300,27 +310,25 @@ internal sealed class BvhBuilder
     private int Partition(int start, int end, int axis, (Vector128<float> Lo, Vector128<float> Scale, Vector128<int> Last) bins, int split,
         out (Box Box, Box Centroids) left, out (Box Box, Box Centroids) right)
     {
-        var min = _min;
-        var max = _max;
-        var index = _index;
+        var refs = _refs;
         Box lb = Empty, lc = Empty, rb = Empty, rc = Empty;
         int l = start, r = end - 1;
         while (l <= r)
         {
-            var c = min[l] + max[l];
+            var p = refs[l];
+            var c = p.Centroid;
             if (BinsOf(c, bins.Lo, bins.Scale, bins.Last).GetElement(axis) < split)
             {
-                lb.Include(min[l], max[l]);
+                lb.Include(p.Min, p.Max);
                 lc.Include(c);
                 l++;
             }
             else
             {
-                rb.Include(min[l], max[l]);
+                rb.Include(p.Min, p.Max);
                 rc.Include(c);
-                (min[l], min[r]) = (min[r], min[l]);
-                (max[l], max[r]) = (max[r], max[l]);
-                (index[l], index[r]) = (index[r], index[l]);
+                refs[l] = refs[r];
+                refs[r] = p;
                 r--;
             }
         }
@@ -344,6 +352,25 @@ internal sealed class BvhBuilder
         Vector128.Min(Vector128.Max(Vector128.ConvertToInt32((c - lo) * scale), Vector128<int>.Zero), last);
 
     private static Box Union(Box a, Box b) => new(Vector128.MinNative(a.Min, b.Min), Vector128.MaxNative(a.Max, b.Max));
+
+    /// <summary>
+    /// A primitive's box rounded outward to single precision, with its index in the fourth lane of
+    /// <see cref="Min"/> (as bits; the lane is never read as a coordinate), so the partitions move 32 bytes.
+    /// </summary>
+    private readonly struct PrimitiveReference(Vector128<float> min, Vector128<float> max)
+    {
+        public readonly Vector128<float> Min = min;
+        public readonly Vector128<float> Max = max;
+
+        public int Index => BitConverter.SingleToInt32Bits(Min.GetElement(3));
+
+        /// <summary>Twice the centre, fourth lane zero: the index bits read as a float are subnormal, and arithmetic on them is slow.</summary>
+        public Vector128<float> Centroid
+        {
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            get => (Min + Max) & Vector128.Create(-1, -1, -1, 0).AsSingle();
+        }
+    }
 
     /// <summary>A box as two vectors (x, y, z and an unused fourth lane).</summary>
     private struct Box(Vector128<float> min, Vector128<float> max)

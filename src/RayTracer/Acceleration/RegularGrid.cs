@@ -96,6 +96,7 @@ public sealed class RegularGrid : AccelerationStructure
         }
 
         Table.ReleaseBuildData();
+        Table.PackTriangles();
     }
 
     public int CellsX => _nx;
