@@ -293,7 +293,7 @@ public sealed class Bvh : AccelerationStructure
     {
         var groups = GC.AllocateUninitializedArray<TriangleGroup4>(groupCount);
         const int LeavesPerTask = 4096;
-        ChunkedLoop.For(leaves.Length, LeavesPerTask, (start, end) =>
+        ChunkedLoop.For(leaves.Length, LeavesPerTask, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
         {
             for (int l = start; l < end; l++)
             {

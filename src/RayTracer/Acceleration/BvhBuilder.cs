@@ -1,4 +1,5 @@
 using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
 using System.Runtime.Intrinsics;
 using RayTracer.Bounds;
 using RayTracer.Maths;
@@ -40,14 +41,14 @@ internal sealed class BvhBuilder
         int n = bounds.Length;
         // Written before read: no need to zero them (nodes past the count are never touched).
         _refs = GC.AllocateUninitializedArray<PrimitiveReference>(n);
-        ChunkedLoop.For(n, ChunkSize, (start, end) =>
+        ChunkedLoop.For(n, ChunkSize, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
         {
             for (int i = start; i < end; i++)
             {
                 ref readonly var b = ref bounds[i];
                 _refs[i] = new PrimitiveReference(
-                    Vector128.Create(Down(b.Min.x), Down(b.Min.y), Down(b.Min.z), BitConverter.Int32BitsToSingle(i)),
-                    Vector128.Create(Up(b.Max.x), Up(b.Max.y), Up(b.Max.z), 0));
+                    Down(Vector256.Create(b.Min.x, b.Min.y, b.Min.z, 0)).WithElement(3, BitConverter.Int32BitsToSingle(i)),
+                    Up(Vector256.Create(b.Max.x, b.Max.y, b.Max.z, 0)));
             }
         });
 
@@ -66,7 +67,7 @@ internal sealed class BvhBuilder
         int n = bounds.Length;
         var root = (Box: Empty, Centroids: Empty);
         var gate = new object();
-        ChunkedLoop.For(n, ChunkSize, (start, end) =>
+        ChunkedLoop.For(n, ChunkSize, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
         {
             var part = builder.Bounds(start, end);
             lock (gate)
@@ -77,7 +78,7 @@ internal sealed class BvhBuilder
         builder.Subtree(0, 0, n, root.Box, root.Centroids, 0);
         var refs = builder._refs;
         var positions = GC.AllocateUninitializedArray<int>(n);
-        ChunkedLoop.For(n, ChunkSize, (start, end) =>
+        ChunkedLoop.For(n, ChunkSize, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
         {
             for (int i = start; i < end; i++)
                 positions[i] = refs[i].Index;
@@ -94,18 +95,31 @@ internal sealed class BvhBuilder
 
     private static Box Empty => new(Vector128.Create(float.PositiveInfinity), Vector128.Create(float.NegativeInfinity));
 
-    /// <summary>The largest float not above <paramref name="x"/>.</summary>
-    private static float Down(double x)
+    /// <summary>Each lane the largest float not above it (without branches: the lanes round either way at random).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static Vector128<float> Down(Vector256<double> x)
     {
-        float f = (float)x;
-        return f > x ? MathF.BitDecrement(f) : f;
+        var f = Vector256.Narrow(x, x).GetLower();
+        var above = Vector256.GreaterThan(Vector256.WidenLower(f.ToVector256Unsafe()), x).AsInt64();
+        var bits = f.AsInt32();
+        var one = Vector128.Create(1);
+        // The next float down: one bit less above zero, one more below, the negative subnormal at zero.
+        var next = Vector128.ConditionalSelect(Vector128.GreaterThan(f, Vector128<float>.Zero).AsInt32(), bits - one,
+            Vector128.ConditionalSelect(Vector128.LessThan(f, Vector128<float>.Zero).AsInt32(), bits + one, Vector128.Create(unchecked((int)0x80000001))));
+        return Vector128.ConditionalSelect(Vector256.Narrow(above, above).GetLower(), next, bits).AsSingle();
     }
 
-    /// <summary>The smallest float not below <paramref name="x"/>.</summary>
-    private static float Up(double x)
+    /// <summary>Each lane the smallest float not below it.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static Vector128<float> Up(Vector256<double> x)
     {
-        float f = (float)x;
-        return f < x ? MathF.BitIncrement(f) : f;
+        var f = Vector256.Narrow(x, x).GetLower();
+        var below = Vector256.LessThan(Vector256.WidenLower(f.ToVector256Unsafe()), x).AsInt64();
+        var bits = f.AsInt32();
+        var one = Vector128.Create(1);
+        var next = Vector128.ConditionalSelect(Vector128.GreaterThan(f, Vector128<float>.Zero).AsInt32(), bits + one,
+            Vector128.ConditionalSelect(Vector128.LessThan(f, Vector128<float>.Zero).AsInt32(), bits - one, one));
+        return Vector128.ConditionalSelect(Vector256.Narrow(below, below).GetLower(), next, bits).AsSingle();
     }
 
     /// <summary>
@@ -139,7 +153,7 @@ internal sealed class BvhBuilder
         }
 
         var (axis, split, cost) = BestSplit(start, end, centroids);
-        double splitCost = TraversalCost + IntersectionCost * cost / Math.Max(box.SurfaceArea, double.Epsilon);
+        double splitCost = TraversalCost + IntersectionCost * cost / Math.Max(box.HalfArea, float.Epsilon);
         if (axis < 0 || (splitCost >= IntersectionCost * GroupsOf(count) && count <= _maxLeafSize))
         {
             if (axis >= 0 || count <= _maxLeafSize)
@@ -182,28 +196,29 @@ internal sealed class BvhBuilder
         var refs = _refs;
         for (int i = start; i < end; i++)
         {
-            box.Include(refs[i].Min, refs[i].Max);
-            centroids.Include(refs[i].Centroid);
+            var min = refs[i].Lower;
+            box.Include(min, refs[i].Max);
+            centroids.Include(min + refs[i].Max);
         }
 
         return (box, centroids);
     }
 
     /// <summary>
-    /// Bins the doubled centroids on every axis with a spread in one pass and returns the cheapest
-    /// plane: its axis (−1 when no plane leaves both sides non-empty), bin boundary and SAH cost
-    /// (area-weighted group counts).
+    /// Bins the doubled centroids on every axis in one pass and returns the cheapest plane: its axis (−1
+    /// when no plane leaves both sides non-empty), bin boundary and SAH cost (half areas weighted by group
+    /// counts). The sweeps handle the three axes together, one vector lane each, in single precision.
     /// </summary>
     [SkipLocalsInit]
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private (int Axis, int Split, double Cost) BestSplit(int start, int end, Box centroids)
     {
+        // Bin b of axis a: box bins[3b + a], count lane a of counts[b].
         Span<Box> bins = stackalloc Box[3 * BinCount];
-        Span<int> counts = stackalloc int[3 * BinCount];
+        Span<Vector128<int>> counts = stackalloc Vector128<int>[BinCount];
         int count = end - start;
         int binCount = BinsFor(count);
         var (lo, scale, _) = BinScale(centroids, binCount);
-        var extent = centroids.Max - lo;
         if (count < ParallelBinning)
         {
             Bin(start, end, lo, scale, binCount, bins, counts);
@@ -213,11 +228,11 @@ internal sealed class BvhBuilder
             // Near the root the subtrees are still few: the processors bin slices and the bins are merged.
             int slices = Environment.ProcessorCount;
             var sliceBins = new Box[slices][];
-            var sliceCounts = new int[slices][];
-            Parallel.For(0, slices, k =>
+            var sliceCounts = new Vector128<int>[slices][];
+            Parallel.For(0, slices, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (k) =>
             {
                 sliceBins[k] = new Box[3 * BinCount];
-                sliceCounts[k] = new int[3 * BinCount];
+                sliceCounts[k] = new Vector128<int>[BinCount];
                 Bin(start + (int)((long)count * k / slices), start + (int)((long)count * (k + 1) / slices), lo, scale, binCount, sliceBins[k], sliceCounts[k]);
             });
             bins.Fill(Empty);
@@ -225,80 +240,90 @@ internal sealed class BvhBuilder
             for (int k = 0; k < slices; k++)
             {
                 for (int b = 0; b < bins.Length; b++)
-                {
                     bins[b] = Union(bins[b], sliceBins[k][b]);
+                for (int b = 0; b < counts.Length; b++)
                     counts[b] += sliceCounts[k][b];
-                }
             }
         }
 
-        int bestAxis = -1, bestSplit = 1;
-        double bestCost = double.PositiveInfinity;
-        Span<double> rightArea = stackalloc double[BinCount];
-        Span<int> rightCount = stackalloc int[BinCount];
+        // Sweep from the right for the half area and group count of every right-hand side, then from the left.
+        Span<Vector128<float>> rightCost = stackalloc Vector128<float>[BinCount];
+        Span<Vector128<int>> rightCount = stackalloc Vector128<int>[BinCount];
+        Box x = Empty, y = Empty, z = Empty;
+        var n = Vector128<int>.Zero;
+        for (int b = binCount - 1; b > 0; b--)
+        {
+            x.Include(bins[3 * b]);
+            y.Include(bins[3 * b + 1]);
+            z.Include(bins[3 * b + 2]);
+            n += counts[b];
+            rightCount[b] = n;
+            rightCost[b] = HalfAreas(x, y, z) * Groups(n);
+        }
+
+        // Axes without spread put every centroid in bin 0, so their right-hand sides stay empty.
+        var best = Vector128.Create(float.PositiveInfinity);
+        var bestSplit = Vector128<int>.Zero;
+        x = y = z = Empty;
+        n = Vector128<int>.Zero;
+        for (int b = 1; b < binCount; b++)
+        {
+            x.Include(bins[3 * b - 3]);
+            y.Include(bins[3 * b - 2]);
+            z.Include(bins[3 * b - 1]);
+            n += counts[b - 1];
+            var cost = HalfAreas(x, y, z) * Groups(n) + rightCost[b];
+            var empty = Vector128.Equals(n, Vector128<int>.Zero) | Vector128.Equals(rightCount[b], Vector128<int>.Zero);
+            var better = Vector128.LessThan(cost, best) & ~empty.AsSingle();
+            best = Vector128.ConditionalSelect(better, cost, best);
+            bestSplit = Vector128.ConditionalSelect(better.AsInt32(), Vector128.Create(b), bestSplit);
+        }
+
+        int bestAxis = -1;
+        float bestCost = float.PositiveInfinity;
         for (int axis = 0; axis < 3; axis++)
         {
-            if (!(extent.GetElement(axis) > 0))
-                continue;
-            var axisBins = bins.Slice(axis * BinCount, binCount);
-            var axisCounts = counts.Slice(axis * BinCount, binCount);
-
-            // Sweep from the right for the area and count of every right-hand side, then from the left.
-            var acc = Empty;
-            int accCount = 0;
-            for (int b = binCount - 1; b > 0; b--)
+            if (best.GetElement(axis) < bestCost)
             {
-                acc = Union(acc, axisBins[b]);
-                accCount += axisCounts[b];
-                rightArea[b] = acc.SurfaceArea;
-                rightCount[b] = accCount;
-            }
-
-            acc = Empty;
-            accCount = 0;
-            for (int b = 1; b < binCount; b++)
-            {
-                acc = Union(acc, axisBins[b - 1]);
-                accCount += axisCounts[b - 1];
-                if (accCount == 0 || rightCount[b] == 0)
-                    continue;
-                double cost = acc.SurfaceArea * GroupsOf(accCount) + rightArea[b] * GroupsOf(rightCount[b]);
-                if (cost < bestCost)
-                {
-                    bestCost = cost;
-                    bestAxis = axis;
-                    bestSplit = b;
-                }
+                bestCost = best.GetElement(axis);
+                bestAxis = axis;
             }
         }
 
-        return (bestAxis, bestSplit, bestCost);
+        return (bestAxis, bestAxis < 0 ? 1 : bestSplit.GetElement(bestAxis), bestCost);
     }
+
+    /// <summary>Half the surface areas of three boxes, in lanes 0 to 2 (lane 3 zero).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static Vector128<float> HalfAreas(Box x, Box y, Box z) =>
+        Vector128.Create(x.HalfArea, y.HalfArea, z.HalfArea, 0);
+
+    /// <summary>Four-lane groups for each lane's primitive count, as floats.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static Vector128<float> Groups(Vector128<int> count) =>
+        Vector128.ConvertToSingle(Vector128.ShiftRightArithmetic(count + Vector128.Create(3), 2));
 
     /// <summary>Counts and bounds the primitives of [start, end) in the bins of their doubled centroids on each axis.</summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    private void Bin(int start, int end, Vector128<float> lo, Vector128<float> scale, int binCount, Span<Box> bins, Span<int> counts)
+    private void Bin(int start, int end, Vector128<float> lo, Vector128<float> scale, int binCount, Span<Box> bins, Span<Vector128<int>> counts)
     {
-        for (int axis = 0; axis < 3; axis++)
-        {
-            bins.Slice(axis * BinCount, binCount).Fill(Empty);
-            counts.Slice(axis * BinCount, binCount).Clear();
-        }
-
+        bins[..(3 * binCount)].Fill(Empty);
+        counts[..binCount].Clear();
+        var laneCounts = MemoryMarshal.Cast<Vector128<int>, int>(counts);
         var last = Vector128.Create(binCount - 1);
         var refs = _refs;
         for (int i = start; i < end; i++)
         {
-            var min = refs[i].Min;
+            var min = refs[i].Lower;
             var max = refs[i].Max;
-            var b = BinsOf(refs[i].Centroid, lo, scale, last);
-            int bx = b.GetElement(0), by = BinCount + b.GetElement(1), bz = 2 * BinCount + b.GetElement(2);
-            bins[bx].Include(min, max);
-            counts[bx]++;
-            bins[by].Include(min, max);
-            counts[by]++;
-            bins[bz].Include(min, max);
-            counts[bz]++;
+            var b = BinsOf(min + max, lo, scale, last);
+            int bx = b.GetElement(0), by = b.GetElement(1), bz = b.GetElement(2);
+            bins[3 * bx].Include(min, max);
+            laneCounts[4 * bx]++;
+            bins[3 * by + 1].Include(min, max);
+            laneCounts[4 * by + 1]++;
+            bins[3 * bz + 2].Include(min, max);
+            laneCounts[4 * bz + 2]++;
         }
     }
 
@@ -310,29 +335,64 @@ internal sealed class BvhBuilder
     private int Partition(int start, int end, int axis, (Vector128<float> Lo, Vector128<float> Scale, Vector128<int> Last) bins, int split,
         out (Box Box, Box Centroids) left, out (Box Box, Box Centroids) right)
     {
+        // Hoare's scheme: scan in from both ends and swap only the pairs on the wrong sides, each
+        // primitive classified once (a left one has its axis lane's bin below the split).
         var refs = _refs;
+        var lo = bins.Lo;
+        var scale = bins.Scale;
+        var last = bins.Last;
+        var splitBin = Vector128.Create(split);
+        int laneBit = 1 << axis;
         Box lb = Empty, lc = Empty, rb = Empty, rc = Empty;
         int l = start, r = end - 1;
-        while (l <= r)
+        while (true)
         {
-            var p = refs[l];
-            var c = p.Centroid;
-            if (BinsOf(c, bins.Lo, bins.Scale, bins.Last).GetElement(axis) < split)
+            Vector128<float> lMin, lMax, lCentroid, rMin, rMax, rCentroid;
+            while (true)
             {
-                lb.Include(p.Min, p.Max);
-                lc.Include(c);
+                if (l > r)
+                    goto Done;
+                lMin = refs[l].Lower;
+                lMax = refs[l].Max;
+                lCentroid = lMin + lMax;
+                if ((Vector128.LessThan(BinsOf(lCentroid, lo, scale, last), splitBin).ExtractMostSignificantBits() & laneBit) == 0)
+                    break;
+                lb.Include(lMin, lMax);
+                lc.Include(lCentroid);
                 l++;
             }
-            else
+
+            // refs[l] belongs right; find a left one from the end.
+            while (true)
             {
-                rb.Include(p.Min, p.Max);
-                rc.Include(c);
-                refs[l] = refs[r];
-                refs[r] = p;
+                if (r == l)
+                {
+                    // Everything else is placed; refs[l] is the first of the right side.
+                    rb.Include(lMin, lMax);
+                    rc.Include(lCentroid);
+                    goto Done;
+                }
+
+                rMin = refs[r].Lower;
+                rMax = refs[r].Max;
+                rCentroid = rMin + rMax;
+                if ((Vector128.LessThan(BinsOf(rCentroid, lo, scale, last), splitBin).ExtractMostSignificantBits() & laneBit) != 0)
+                    break;
+                rb.Include(rMin, rMax);
+                rc.Include(rCentroid);
                 r--;
             }
+
+            lb.Include(rMin, rMax);
+            lc.Include(rCentroid);
+            rb.Include(lMin, lMax);
+            rc.Include(lCentroid);
+            (refs[l], refs[r]) = (refs[r], refs[l]);
+            l++;
+            r--;
         }
 
+    Done:
         left = (lb, lc);
         right = (rb, rc);
         return l;
@@ -346,10 +406,13 @@ internal sealed class BvhBuilder
     /// <summary>Bins for a range: small ranges get fewer, which costs them less to sweep.</summary>
     private static int BinsFor(int count) => Math.Min(BinCount, count);
 
-    /// <summary>The bin of a doubled centroid on each axis (lane 3 is meaningless).</summary>
+    /// <summary>
+    /// The bin of a doubled centroid on each axis (lane 3 is meaningless). The native conversion is one
+    /// instruction; out of range or NaN (a zero extent) it gives int.MinValue, which the clamp takes to bin 0.
+    /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static Vector128<int> BinsOf(Vector128<float> c, Vector128<float> lo, Vector128<float> scale, Vector128<int> last) =>
-        Vector128.Min(Vector128.Max(Vector128.ConvertToInt32((c - lo) * scale), Vector128<int>.Zero), last);
+        Vector128.Min(Vector128.Max(Vector128.ConvertToInt32Native((c - lo) * scale), Vector128<int>.Zero), last);
 
     private static Box Union(Box a, Box b) => new(Vector128.MinNative(a.Min, b.Min), Vector128.MaxNative(a.Max, b.Max));
 
@@ -364,11 +427,14 @@ internal sealed class BvhBuilder
 
         public int Index => BitConverter.SingleToInt32Bits(Min.GetElement(3));
 
-        /// <summary>Twice the centre, fourth lane zero: the index bits read as a float are subnormal, and arithmetic on them is slow.</summary>
-        public Vector128<float> Centroid
+        /// <summary>
+        /// <see cref="Min"/> with the fourth lane zero: the index bits read as a float are subnormal, and
+        /// arithmetic on subnormals is slow, so they never reach a box or a centroid.
+        /// </summary>
+        public Vector128<float> Lower
         {
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            get => (Min + Max) & Vector128.Create(-1, -1, -1, 0).AsSingle();
+            get => Min & Vector128.Create(-1, -1, -1, 0).AsSingle();
         }
     }
 
@@ -389,14 +455,17 @@ internal sealed class BvhBuilder
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Include(Vector128<float> p) => Include(p, p);
 
-        public readonly double SurfaceArea
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void Include(Box b) => Include(b.Min, b.Max);
+
+        /// <summary>xy + yz + zx of the extent (lane 3 of both corners is zero); +∞ for an empty box.</summary>
+        public readonly float HalfArea
         {
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
             get
             {
-                // xy + yz + zx as d · (y, z, x), lane 3 zeroed.
-                var d = (Max - Min).WithElement(3, 0);
-                var p = d * Vector128.Shuffle(d, Vector128.Create(1, 2, 0, 3));
-                return d.GetElement(0) < 0 ? 0 : 2.0 * Vector128.Sum(p);
+                var d = Max - Min;
+                return Vector128.Dot(d, Vector128.Shuffle(d, Vector128.Create(1, 2, 0, 3)));
             }
         }
 

@@ -2,7 +2,9 @@ namespace RayTracer.Acceleration;
 
 /// <summary>
 /// A loop over [0, count) in chunks run in parallel, or on the calling thread when there is only one
-/// chunk: small scenes should not pay for waking the thread pool.
+/// chunk: small scenes should not pay for waking the thread pool. Bodies are best marked
+/// <c>[MethodImpl(MethodImplOptions.AggressiveOptimization)]</c>: a build calls each only a few times,
+/// too few for tiered compilation to optimize it, and the first build would run it unoptimized.
 /// </summary>
 internal static class ChunkedLoop
 {

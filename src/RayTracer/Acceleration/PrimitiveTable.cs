@@ -1,4 +1,5 @@
 using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
 using RayTracer.Bounds;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Meshes;
@@ -40,7 +41,7 @@ internal sealed class PrimitiveTable
         // ones only when some box is empty or infinite.
         var boxes = new BoundingBox[n];
         int unusual = 0;
-        ChunkedLoop.For(n, ChunkSize, (start, end) =>
+        ChunkedLoop.For(n, ChunkSize, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
         {
             bool any = false;
             for (int i = start; i < end; i++)
@@ -90,19 +91,26 @@ internal sealed class PrimitiveTable
 
         var sceneBounds = BoundingBox.Empty;
         var gate = new object();
-        ChunkedLoop.For(n, ChunkSize, (start, end) =>
+        ChunkedLoop.For(n, ChunkSize, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
         {
-            var box = BoundingBox.Empty;
+            // Componentwise, so that nothing here waits for tiered compilation.
+            double x0 = double.PositiveInfinity, y0 = x0, z0 = x0, x1 = double.NegativeInfinity, y1 = x1, z1 = x1;
             for (int i = start; i < end; i++)
             {
                 var o = Objects[i];
-                box.Include(Bounds[i]);
+                ref readonly var b = ref Bounds[i];
+                x0 = Math.Min(x0, b.Min.x);
+                y0 = Math.Min(y0, b.Min.y);
+                z0 = Math.Min(z0, b.Min.z);
+                x1 = Math.Max(x1, b.Max.x);
+                y1 = Math.Max(y1, b.Max.y);
+                z1 = Math.Max(z1, b.Max.z);
                 _castsShadows[i] = o.CastsShadows;
                 _kind[i] = o is ITriangle tri ? KindOf(tri.Test) : PrimitiveKind.Object;
             }
 
             lock (gate)
-                sceneBounds.Include(box);
+                sceneBounds.Include(new BoundingBox(new Point3D(x0, y0, z0), new Point3D(x1, y1, z1)));
         });
 
         SceneBounds = sceneBounds;
@@ -129,7 +137,7 @@ internal sealed class PrimitiveTable
         _triangles = triangles ? new PackedTriangle[n] : [];
         if (plucker || edges || triangles)
         {
-            ChunkedLoop.For(n, ChunkSize, (start, end) =>
+            ChunkedLoop.For(n, ChunkSize, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
             {
                 for (int i = start; i < end; i++)
                 {
@@ -213,8 +221,12 @@ internal sealed class PrimitiveTable
     public bool IsMollerTrumbore(int i) => _kind[i] == PrimitiveKind.MollerTrumbore;
 
     /// <summary>The Möller–Trumbore form of a triangle for which <see cref="IsMollerTrumbore"/> holds, computed from the object.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public PackedTriangle MollerTrumbore(int i)
     {
+        // Mesh triangles, by far the most common, without the interface calls.
+        if (Objects[i] is MeshTriangle mesh)
+            return PackedTriangle.From(mesh.V0, mesh.V1, mesh.V2);
         var tri = (ITriangle)Objects[i];
         return PackedTriangle.From(tri.V0, tri.V1, tri.V2);
     }
@@ -316,12 +328,14 @@ internal sealed class PrimitiveTable
             return source;
         }
 
-        var result = new T[order.Length];
+        var result = GC.AllocateUninitializedArray<T>(order.Length);
         const int PerTask = 1 << 16;
-        ChunkedLoop.For(order.Length, PerTask, (start, end) =>
+        ChunkedLoop.For(order.Length, PerTask, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
         {
+            // Through a reference, which skips the array-covariance check of each element store.
+            ref var first = ref MemoryMarshal.GetArrayDataReference(result);
             for (int i = start; i < end; i++)
-                result[i] = source[order[i]];
+                Unsafe.Add(ref first, i) = source[order[i]];
         });
         return result;
     }
