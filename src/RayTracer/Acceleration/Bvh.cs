@@ -37,6 +37,12 @@ public sealed class Bvh : AccelerationStructure
     private int _leafCount;
 
     public Bvh(IReadOnlyList<GeometricObject> objects, int maxLeafSize = 4)
+        : this(objects, maxLeafSize, BvhBuilder.Parallelism.Default)
+    {
+    }
+
+    /// <summary>As the public constructor, with the sizes from which the build shares work among threads.</summary>
+    internal Bvh(IReadOnlyList<GeometricObject> objects, int maxLeafSize, BvhBuilder.Parallelism parallelism)
         : base(objects)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(maxLeafSize, 1);
@@ -48,7 +54,7 @@ public sealed class Bvh : AccelerationStructure
             return;
         }
 
-        _nodes = BvhBuilder.Build(Table.Bounds, maxLeafSize, MaxDepth, out var order, out int binaryNodes);
+        _nodes = BvhBuilder.Build(Table.Bounds, maxLeafSize, MaxDepth, parallelism, out var order, out int binaryNodes);
         Table.ReleaseBuildData();
         Table.Permute(order);
 
@@ -59,7 +65,7 @@ public sealed class Bvh : AccelerationStructure
         _leaves = GC.AllocateUninitializedArray<BvhLeaf>((binaryNodes + 1) / 2);
         Collapse(0);
         int groupCount = DescribeLeaves(_leaves);
-        _groups = FillGroups(_leaves, groupCount);
+        _groups = FillGroups(_leaves, groupCount, Math.Max(1, parallelism.Chunk / 16));
         if (_leaves.Any(leaf => leaf.Group < 0 || !leaf.GroupsCastShadows))
             Table.PackTriangles(); // some leaves test their primitives one by one
         BinaryNodeCount = binaryNodes;
@@ -289,11 +295,10 @@ public sealed class Bvh : AccelerationStructure
 
     /// <summary>Copies the leaves' triangles into their groups, four lanes at a time; lanes left over are zero and never hit.</summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    private TriangleGroup4[] FillGroups(BvhLeaf[] leaves, int groupCount)
+    private TriangleGroup4[] FillGroups(BvhLeaf[] leaves, int groupCount, int leavesPerTask)
     {
         var groups = GC.AllocateUninitializedArray<TriangleGroup4>(groupCount);
-        const int LeavesPerTask = 4096;
-        ChunkedLoop.For(leaves.Length, LeavesPerTask, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
+        ChunkedLoop.For(leaves.Length, leavesPerTask, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
         {
             for (int l = start; l < end; l++)
             {

@@ -18,14 +18,6 @@ internal sealed class BvhBuilder
 {
     private const int BinCount = 16;
 
-    /// <summary>Subtrees smaller than this are built on the calling thread.</summary>
-    private const int ParallelThreshold = 8192;
-
-    /// <summary>Ranges at least this large are binned by all processors together.</summary>
-    private const int ParallelBinning = 1 << 17;
-
-    /// <summary>Primitives per work item of the parallel loops over all of them.</summary>
-    private const int ChunkSize = 1 << 16;
     private const double TraversalCost = 1.0;
     private const double IntersectionCost = 1.0;
 
@@ -33,15 +25,17 @@ internal sealed class BvhBuilder
     private readonly BvhNode[] _nodes;
     private readonly int _maxLeafSize;
     private readonly int _maxDepth;
+    private readonly Parallelism _parallelism;
     private int _nodeCount;
 
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    private BvhBuilder(BoundingBox[] bounds, int maxLeafSize, int maxDepth)
+    private BvhBuilder(BoundingBox[] bounds, int maxLeafSize, int maxDepth, Parallelism parallelism)
     {
+        _parallelism = parallelism;
         int n = bounds.Length;
         // Written before read: no need to zero them (nodes past the count are never touched).
         _refs = GC.AllocateUninitializedArray<PrimitiveReference>(n);
-        ChunkedLoop.For(n, ChunkSize, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
+        ChunkedLoop.For(n, parallelism.Chunk, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
         {
             for (int i = start; i < end; i++)
             {
@@ -61,13 +55,13 @@ internal sealed class BvhBuilder
     /// Builds the tree over <paramref name="bounds"/> with its root at 0; order[i] is the primitive at build
     /// position i, and the first <paramref name="nodeCount"/> nodes are used.
     /// </summary>
-    public static BvhNode[] Build(BoundingBox[] bounds, int maxLeafSize, int maxDepth, out int[] order, out int nodeCount)
+    public static BvhNode[] Build(BoundingBox[] bounds, int maxLeafSize, int maxDepth, Parallelism parallelism, out int[] order, out int nodeCount)
     {
-        var builder = new BvhBuilder(bounds, maxLeafSize, maxDepth);
+        var builder = new BvhBuilder(bounds, maxLeafSize, maxDepth, parallelism);
         int n = bounds.Length;
         var root = (Box: Empty, Centroids: Empty);
         var gate = new object();
-        ChunkedLoop.For(n, ChunkSize, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
+        ChunkedLoop.For(n, parallelism.Chunk, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
         {
             var part = builder.Bounds(start, end);
             lock (gate)
@@ -78,7 +72,7 @@ internal sealed class BvhBuilder
         builder.Subtree(0, 0, n, root.Box, root.Centroids, 0);
         var refs = builder._refs;
         var positions = GC.AllocateUninitializedArray<int>(n);
-        ChunkedLoop.For(n, ChunkSize, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
+        ChunkedLoop.For(n, parallelism.Chunk, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
         {
             for (int i = start; i < end; i++)
                 positions[i] = refs[i].Index;
@@ -88,6 +82,20 @@ internal sealed class BvhBuilder
 
         // Nodes past the count are never referred to; the array is returned as is rather than copied.
         return builder._nodes;
+    }
+
+    /// <summary>
+    /// Sizes from which work is shared among threads: subtrees of at least <see cref="Subtrees"/> primitives
+    /// are built in parallel, ranges of at least <see cref="Binning"/> are binned by all processors
+    /// together, and the loops over all primitives run in chunks of <see cref="Chunk"/> (leaves: a
+    /// sixteenth of it). The results do not depend on them; tests set them low to run the parallel paths
+    /// on small meshes.
+    /// </summary>
+    internal readonly record struct Parallelism(int Subtrees, int Binning, int Chunk)
+    {
+        public static Parallelism Default => new(1024, 1 << 17, 1 << 16);
+
+        public static Parallelism None => new(int.MaxValue, int.MaxValue, int.MaxValue);
     }
 
     /// <summary>Leaf tests cost per four-lane group: up to four triangles are tested for the price of one.</summary>
@@ -175,7 +183,7 @@ internal sealed class BvhBuilder
     {
         int first = Interlocked.Add(ref _nodeCount, 2) - 2;
         _nodes[index] = new BvhNode { Bounds = Union(left.Box, right.Box).ToBoundingBox(), Offset = first, Count = 0 };
-        if (end - start >= ParallelThreshold)
+        if (end - start >= _parallelism.Subtrees)
         {
             var task = Task.Run(() => Subtree(first, start, mid, left.Box, left.Centroids, depth + 1));
             Subtree(first + 1, mid, end, right.Box, right.Centroids, depth + 1);
@@ -219,7 +227,7 @@ internal sealed class BvhBuilder
         int count = end - start;
         int binCount = BinsFor(count);
         var (lo, scale, _) = BinScale(centroids, binCount);
-        if (count < ParallelBinning)
+        if (count < _parallelism.Binning)
         {
             Bin(start, end, lo, scale, binCount, bins, counts);
         }
@@ -313,18 +321,22 @@ internal sealed class BvhBuilder
         var last = Vector128.Create(binCount - 1);
         var refs = _refs;
         for (int i = start; i < end; i++)
-        {
-            var min = refs[i].Lower;
-            var max = refs[i].Max;
-            var b = BinsOf(min + max, lo, scale, last);
-            int bx = b.GetElement(0), by = b.GetElement(1), bz = b.GetElement(2);
-            bins[3 * bx].Include(min, max);
-            laneCounts[4 * bx]++;
-            bins[3 * by + 1].Include(min, max);
-            laneCounts[4 * by + 1]++;
-            bins[3 * bz + 2].Include(min, max);
-            laneCounts[4 * bz + 2]++;
-        }
+            Add(refs[i], bins, laneCounts, lo, scale, last);
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static void Add(in PrimitiveReference p, Span<Box> bins, Span<int> laneCounts, Vector128<float> lo, Vector128<float> scale, Vector128<int> last)
+    {
+        var min = p.Lower;
+        var max = p.Max;
+        var b = BinsOf(min + max, lo, scale, last);
+        int bx = b.GetElement(0), by = b.GetElement(1), bz = b.GetElement(2);
+        bins[3 * bx].Include(min, max);
+        laneCounts[4 * bx]++;
+        bins[3 * by + 1].Include(min, max);
+        laneCounts[4 * by + 1]++;
+        bins[3 * bz + 2].Include(min, max);
+        laneCounts[4 * bz + 2]++;
     }
 
     /// <summary>

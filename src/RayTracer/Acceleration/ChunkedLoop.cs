@@ -10,13 +10,13 @@ internal static class ChunkedLoop
 {
     public static void For(int count, int chunkSize, Action<int, int> body)
     {
-        int chunks = (count + chunkSize - 1) / chunkSize;
+        int chunks = (int)(((long)count + chunkSize - 1) / chunkSize);
         if (chunks <= 1)
         {
             body(0, count);
             return;
         }
 
-        Parallel.For(0, chunks, chunk => body(chunk * chunkSize, Math.Min(count, (chunk + 1) * chunkSize)));
+        Parallel.For(0, chunks, chunk => body(chunk * chunkSize, (int)Math.Min(count, (chunk + 1L) * chunkSize)));
     }
 }
