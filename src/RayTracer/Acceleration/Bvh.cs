@@ -351,9 +351,9 @@ public sealed class Bvh : AccelerationStructure
                 for (int i = 0; i < count; i++)
                 {
                     var c = _nodes[slots[i]];
-                    if (c.Count == 0 && c.Bounds.SurfaceArea > bestArea)
+                    if (c.Count == 0 && c.SurfaceArea > bestArea)
                     {
-                        bestArea = c.Bounds.SurfaceArea;
+                        bestArea = c.SurfaceArea;
                         best = i;
                     }
                 }
@@ -383,12 +383,12 @@ public sealed class Bvh : AccelerationStructure
             }
 
             var c = _nodes[slots[i]];
-            minX[i] = c.Bounds.Min.x;
-            minY[i] = c.Bounds.Min.y;
-            minZ[i] = c.Bounds.Min.z;
-            maxX[i] = c.Bounds.Max.x;
-            maxY[i] = c.Bounds.Max.y;
-            maxZ[i] = c.Bounds.Max.z;
+            minX[i] = c.Min.GetElement(0);
+            minY[i] = c.Min.GetElement(1);
+            minZ[i] = c.Min.GetElement(2);
+            maxX[i] = c.Max.GetElement(0);
+            maxY[i] = c.Max.GetElement(1);
+            maxZ[i] = c.Max.GetElement(2);
             if (c.Count > 0)
             {
                 refs[i] = ~_leafCount;

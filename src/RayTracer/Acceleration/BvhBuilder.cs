@@ -101,7 +101,12 @@ internal sealed class BvhBuilder
     /// <summary>Leaf tests cost per four-lane group: up to four triangles are tested for the price of one.</summary>
     public static int GroupsOf(int count) => (count + 3) >> 2;
 
-    private static Box Empty => new(Vector128.Create(float.PositiveInfinity), Vector128.Create(float.NegativeInfinity));
+    private static Box Empty
+    {
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        get => new(Vector128.Create(float.PositiveInfinity), Vector128.Create(float.NegativeInfinity));
+    }
+
 
     /// <summary>Each lane the largest float not above it (without branches: the lanes round either way at random).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -142,7 +147,7 @@ internal sealed class BvhBuilder
         // Up to four primitives cost one group test, less than any split (which adds a traversal step).
         if (count <= Math.Min(_maxLeafSize, 4))
         {
-            _nodes[index] = new BvhNode { Bounds = box.ToBoundingBox(), Offset = start, Count = count };
+            _nodes[index] = new BvhNode { Min = box.Min, Max = box.Max, Offset = start, Count = count };
             return;
         }
 
@@ -156,7 +161,7 @@ internal sealed class BvhBuilder
                 return;
             }
 
-            _nodes[index] = new BvhNode { Bounds = box.ToBoundingBox(), Offset = start, Count = count };
+            _nodes[index] = new BvhNode { Min = box.Min, Max = box.Max, Offset = start, Count = count };
             return;
         }
 
@@ -166,7 +171,7 @@ internal sealed class BvhBuilder
         {
             if (axis >= 0 || count <= _maxLeafSize)
             {
-                _nodes[index] = new BvhNode { Bounds = box.ToBoundingBox(), Offset = start, Count = count };
+                _nodes[index] = new BvhNode { Min = box.Min, Max = box.Max, Offset = start, Count = count };
                 return;
             }
 
@@ -182,7 +187,8 @@ internal sealed class BvhBuilder
     private void Interior(int index, int start, int mid, int end, (Box Box, Box Centroids) left, (Box Box, Box Centroids) right, int depth)
     {
         int first = Interlocked.Add(ref _nodeCount, 2) - 2;
-        _nodes[index] = new BvhNode { Bounds = Union(left.Box, right.Box).ToBoundingBox(), Offset = first, Count = 0 };
+        var union = Union(left.Box, right.Box);
+        _nodes[index] = new BvhNode { Min = union.Min, Max = union.Max, Offset = first, Count = 0 };
         if (end - start >= _parallelism.Subtrees)
         {
             var task = Task.Run(() => Subtree(first, start, mid, left.Box, left.Centroids, depth + 1));
@@ -426,6 +432,7 @@ internal sealed class BvhBuilder
     private static Vector128<int> BinsOf(Vector128<float> c, Vector128<float> lo, Vector128<float> scale, Vector128<int> last) =>
         Vector128.Min(Vector128.Max(Vector128.ConvertToInt32Native((c - lo) * scale), Vector128<int>.Zero), last);
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static Box Union(Box a, Box b) => new(Vector128.MinNative(a.Min, b.Min), Vector128.MaxNative(a.Max, b.Max));
 
     /// <summary>
@@ -480,9 +487,5 @@ internal sealed class BvhBuilder
                 return Vector128.Dot(d, Vector128.Shuffle(d, Vector128.Create(1, 2, 0, 3)));
             }
         }
-
-        public readonly BoundingBox ToBoundingBox() => new(
-            new Point3D(Min.GetElement(0), Min.GetElement(1), Min.GetElement(2)),
-            new Point3D(Max.GetElement(0), Max.GetElement(1), Max.GetElement(2)));
     }
 }
