@@ -195,7 +195,8 @@ public static class ThroughputReport
     {
         // Wall-clock rate is what a user sees; the per-CPU-second rate does not depend on how
         // busy the machine is with other work, which makes runs on shared machines comparable.
-        string build = buildTiming is { } b ? string.Create(CultureInfo.InvariantCulture, $"build {b.Wall,6:F3} s {b.Cpu,6:F3} CPU-s") : new string(' ', 28);
+        // Milliseconds with two decimals, so that a small mesh's build of about a millisecond still reads.
+        string build = buildTiming is { } b ? string.Create(CultureInfo.InvariantCulture, $"build {b.Wall * 1e3,8:F2} ms {b.Cpu * 1e3,8:F2} CPU-ms") : new string(' ', 33);
         return string.Create(CultureInfo.InvariantCulture,
             $"{name,-20} {build}   cast {timing.Wall,7:F3} s   {rays / timing.Wall / 1e6,7:F2} Mrays/s   {rays / timing.Cpu / 1e6,7:F2} Mrays per CPU-second   {counted} {timing.Count:N0}");
     }
