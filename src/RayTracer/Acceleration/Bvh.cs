@@ -56,14 +56,18 @@ public sealed class Bvh : AccelerationStructure
 
         _nodes = BvhBuilder.Build(Table.Bounds, maxLeafSize, MaxDepth, parallelism, out var order, out int binaryNodes);
         Table.ReleaseBuildData();
-        Table.Permute(order);
 
-        // Collapse pairs of levels into four-wide nodes for traversal. A full binary tree of m nodes has
+        // The table is put in build order while this thread collapses pairs of levels into four-wide
+        // nodes for traversal (the collapse reads only the binary nodes). A full binary tree of m nodes has
         // (m + 1) / 2 leaves, which stay leaves, and (m - 1) / 2 interior nodes, at least two per wide
         // node but the root; the wide array may be longer than its count, and its tail is never touched.
+        var permute = parallelism.Chunk < n ? Task.Run(() => Table.Permute(order)) : null;
+        if (permute is null)
+            Table.Permute(order);
         _wide = GC.AllocateUninitializedArray<Bvh4Node>(Math.Max(1, (binaryNodes - 1) / 2));
         _leaves = GC.AllocateUninitializedArray<BvhLeaf>((binaryNodes + 1) / 2);
         Collapse(0);
+        permute?.Wait();
         int groupCount = DescribeLeaves(_leaves);
         _groups = FillGroups(_leaves, groupCount, Math.Max(1, parallelism.Chunk / 16));
         if (_leaves.Any(leaf => leaf.Group < 0 || !leaf.GroupsCastShadows))
