@@ -18,6 +18,9 @@ internal sealed class BvhBuilder
 {
     private const int BinCount = 32;
 
+    /// <summary>Ranges up to this size are partitioned without branches (<see cref="PartitionSmall"/>).</summary>
+    private const int SmallPartition = 32;
+
     private const double TraversalCost = 1.0;
     private const double IntersectionCost = 1.0;
 
@@ -353,6 +356,9 @@ internal sealed class BvhBuilder
     private int Partition(int start, int end, int axis, (Vector128<float> Lo, Vector128<float> Scale, Vector128<int> Last) bins, int split,
         out (Box Box, Box Centroids) left, out (Box Box, Box Centroids) right)
     {
+        if (end - start <= SmallPartition)
+            return PartitionSmall(start, end, axis, bins, split, out left, out right);
+
         // Hoare's scheme: scan in from both ends and swap only the pairs on the wrong sides, each
         // primitive classified once (a left one has its axis lane's bin below the split).
         var refs = _refs;
@@ -414,6 +420,50 @@ internal sealed class BvhBuilder
         left = (lb, lc);
         right = (rb, rc);
         return l;
+    }
+
+    /// <summary>
+    /// <see cref="Partition"/> for a few primitives, without branches on their sides (small ranges are not
+    /// the long runs on one side that make a branch predictable): each is written to the front or the
+    /// back of a buffer at an index chosen by arithmetic, then the sides' boxes are gathered and the
+    /// buffer copied back.
+    /// </summary>
+    [SkipLocalsInit]
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    private int PartitionSmall(int start, int end, int axis, (Vector128<float> Lo, Vector128<float> Scale, Vector128<int> Last) bins, int split,
+        out (Box Box, Box Centroids) left, out (Box Box, Box Centroids) right)
+    {
+        Span<PrimitiveReference> buffer = stackalloc PrimitiveReference[SmallPartition];
+        var refs = _refs.AsSpan(start, end - start);
+        var splitBin = Vector128.Create(split);
+        int l = 0, r = refs.Length - 1;
+        foreach (var p in refs)
+        {
+            int isLeft = (int)(Vector128.LessThan(BinsOf(p.Lower + p.Max, bins.Lo, bins.Scale, bins.Last), splitBin).ExtractMostSignificantBits() >> axis) & 1;
+            buffer[r + ((l - r) & -isLeft)] = p;
+            l += isLeft;
+            r -= 1 - isLeft;
+        }
+
+        left = Bounds(buffer[..l]);
+        right = Bounds(buffer[l..refs.Length]);
+        buffer[..refs.Length].CopyTo(refs);
+        return start + l;
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static (Box Box, Box Centroids) Bounds(ReadOnlySpan<PrimitiveReference> refs)
+    {
+        var box = Empty;
+        var centroids = Empty;
+        foreach (var p in refs)
+        {
+            var min = p.Lower;
+            box.Include(min, p.Max);
+            centroids.Include(min + p.Max);
+        }
+
+        return (box, centroids);
     }
 
     /// <summary>Origin and scale that map doubled centroids to bins; the same for binning and partitioning.</summary>
