@@ -44,6 +44,7 @@ public sealed class BoundingIntervalHierarchy : AccelerationStructure
         _nodes = [.. nodes];
         Table.Permute(order);
         Table.ReleaseBuildData();
+        Table.PackTriangles();
     }
 
     public int MaxLeafSize { get; }

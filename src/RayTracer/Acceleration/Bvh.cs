@@ -33,8 +33,16 @@ public sealed class Bvh : AccelerationStructure
     private readonly Bvh4Node[] _wide = [];
     private readonly BvhLeaf[] _leaves = [];
     private readonly TriangleGroup4[] _groups = [];
+    private int _wideCount;
+    private int _leafCount;
 
     public Bvh(IReadOnlyList<GeometricObject> objects, int maxLeafSize = 4)
+        : this(objects, maxLeafSize, BvhBuilder.Parallelism.Default)
+    {
+    }
+
+    /// <summary>As the public constructor, with the sizes from which the build shares work among threads.</summary>
+    internal Bvh(IReadOnlyList<GeometricObject> objects, int maxLeafSize, BvhBuilder.Parallelism parallelism)
         : base(objects)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(maxLeafSize, 1);
@@ -46,18 +54,24 @@ public sealed class Bvh : AccelerationStructure
             return;
         }
 
-        _nodes = BvhBuilder.Build(Table.Bounds, maxLeafSize, MaxDepth, out var order, out int binaryNodes);
+        _nodes = BvhBuilder.Build(Table.Bounds, maxLeafSize, MaxDepth, parallelism, out var order, out int binaryNodes);
         Table.ReleaseBuildData();
-        Table.Permute(order);
 
-        // Collapse pairs of levels into four-wide nodes for traversal.
-        var wide = new List<Bvh4Node>(_nodes.Length / 3 + 1);
-        var leafOffsets = new List<int>();
-        var leafCounts = new List<int>();
-        Collapse(0, wide, leafOffsets, leafCounts);
-        _wide = [.. wide];
-        _leaves = DescribeLeaves(leafOffsets, leafCounts, out int groupCount);
-        _groups = FillGroups(_leaves, groupCount);
+        // The table is put in build order while this thread collapses pairs of levels into four-wide
+        // nodes for traversal (the collapse reads only the binary nodes). A full binary tree of m nodes has
+        // (m + 1) / 2 leaves, which stay leaves, and (m - 1) / 2 interior nodes, at least two per wide
+        // node but the root; the wide array may be longer than its count, and its tail is never touched.
+        var permute = parallelism.Chunk < n ? Task.Run(() => Table.Permute(order)) : null;
+        if (permute is null)
+            Table.Permute(order);
+        _wide = GC.AllocateUninitializedArray<Bvh4Node>(Math.Max(1, (binaryNodes - 1) / 2));
+        _leaves = GC.AllocateUninitializedArray<BvhLeaf>((binaryNodes + 1) / 2);
+        Collapse(0);
+        permute?.Wait();
+        int groupCount = DescribeLeaves(_leaves);
+        _groups = FillGroups(_leaves, groupCount, Math.Max(1, parallelism.Chunk / 16));
+        if (_leaves.Any(leaf => leaf.Group < 0 || !leaf.GroupsCastShadows))
+            Table.PackTriangles(); // some leaves test their primitives one by one
         BinaryNodeCount = binaryNodes;
         _nodes = [];
     }
@@ -68,7 +82,7 @@ public sealed class Bvh : AccelerationStructure
     public int BinaryNodeCount { get; }
 
     /// <summary>Nodes of the four-wide tree used for traversal.</summary>
-    public int NodeCount => _wide.Length;
+    public int NodeCount => _wideCount;
 
     [SkipLocalsInit]
     private protected override bool TraverseNearest(in Ray ray, ref double t, ref int primitive)
@@ -252,17 +266,18 @@ public sealed class Bvh : AccelerationStructure
 
     /// <summary>
     /// The leaves, each with its run of four-lane groups when all its primitives are Möller–Trumbore
-    /// triangles; <paramref name="groupCount"/> is the number of groups.
+    /// triangles; returns the number of groups.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    private BvhLeaf[] DescribeLeaves(List<int> offsets, List<int> counts, out int groupCount)
+    private int DescribeLeaves(BvhLeaf[] leaves)
     {
-        var leaves = new BvhLeaf[offsets.Count];
-        groupCount = 0;
+        int groupCount = 0;
         for (int l = 0; l < leaves.Length; l++)
         {
-            int first = offsets[l], count = counts[l];
-            leaves[l] = new BvhLeaf { First = first, Count = count, Group = -1 };
+            int first = leaves[l].First, count = leaves[l].Count;
+            leaves[l].Group = -1;
+            leaves[l].GroupCount = 0;
+            leaves[l].GroupsCastShadows = false;
             bool triangles = true, castShadows = true;
             for (int i = first; i < first + count; i++)
             {
@@ -279,47 +294,48 @@ public sealed class Bvh : AccelerationStructure
             }
         }
 
-        return leaves;
+        return groupCount;
     }
 
-    /// <summary>Copies the leaves' triangles into their groups, lane by lane; lanes left over stay zero and never hit.</summary>
+    /// <summary>Copies the leaves' triangles into their groups, four lanes at a time; lanes left over are zero and never hit.</summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    private TriangleGroup4[] FillGroups(BvhLeaf[] leaves, int groupCount)
+    private TriangleGroup4[] FillGroups(BvhLeaf[] leaves, int groupCount, int leavesPerTask)
     {
-        var groups = new TriangleGroup4[groupCount];
-        const int LeavesPerTask = 4096;
-        ChunkedLoop.For(leaves.Length, LeavesPerTask, (start, end) =>
+        var groups = GC.AllocateUninitializedArray<TriangleGroup4>(groupCount);
+        ChunkedLoop.For(leaves.Length, leavesPerTask, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
         {
             for (int l = start; l < end; l++)
             {
                 var leaf = leaves[l];
-                for (int k = 0; leaf.Group >= 0 && k < leaf.Count; k++)
+                for (int g = 0; g < leaf.GroupCount; g++)
                 {
-                    ref var group = ref groups[leaf.Group + k / 4];
-                    ref readonly var tri = ref Table.Packed(leaf.First + k);
-                    int lane = k % 4;
-                    SetLane(ref group.V0, lane, tri.V0.x, tri.V0.y, tri.V0.z);
-                    SetLane(ref group.E1, lane, tri.E1.x, tri.E1.y, tri.E1.z);
-                    SetLane(ref group.E2, lane, tri.E2.x, tri.E2.y, tri.E2.z);
+                    int first = leaf.First + 4 * g, lanes = Math.Min(4, leaf.Count - 4 * g);
+                    var a = Table.MollerTrumbore(first);
+                    var b = lanes > 1 ? Table.MollerTrumbore(first + 1) : default;
+                    var c = lanes > 2 ? Table.MollerTrumbore(first + 2) : default;
+                    var d = lanes > 3 ? Table.MollerTrumbore(first + 3) : default;
+                    groups[leaf.Group + g] = new TriangleGroup4
+                    {
+                        V0 = Lanes(a.V0.x, b.V0.x, c.V0.x, d.V0.x, a.V0.y, b.V0.y, c.V0.y, d.V0.y, a.V0.z, b.V0.z, c.V0.z, d.V0.z),
+                        E1 = Lanes(a.E1.x, b.E1.x, c.E1.x, d.E1.x, a.E1.y, b.E1.y, c.E1.y, d.E1.y, a.E1.z, b.E1.z, c.E1.z, d.E1.z),
+                        E2 = Lanes(a.E2.x, b.E2.x, c.E2.x, d.E2.x, a.E2.y, b.E2.y, c.E2.y, d.E2.y, a.E2.z, b.E2.z, c.E2.z, d.E2.z),
+                    };
                 }
             }
         });
         return groups;
     }
 
-    private static void SetLane(ref Vector3x4 v, int lane, double x, double y, double z)
-    {
-        v.x = v.x.WithElement(lane, x);
-        v.y = v.y.WithElement(lane, y);
-        v.z = v.z.WithElement(lane, z);
-    }
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static Vector3x4 Lanes(double x0, double x1, double x2, double x3, double y0, double y1, double y2, double y3, double z0, double z1, double z2, double z3) =>
+        new() { x = Vector256.Create(x0, x1, x2, x3), y = Vector256.Create(y0, y1, y2, y3), z = Vector256.Create(z0, z1, z2, z3) };
 
     /// <summary>
     /// Turns the binary subtree at <paramref name="binary"/> into a four-wide node: its children are
     /// opened, largest surface area first, until there are four slots or only leaves remain.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    private int Collapse(int binary, List<Bvh4Node> wide, List<int> leafOffsets, List<int> leafCounts)
+    private int Collapse(int binary)
     {
         Span<int> slots = stackalloc int[4];
         int count = 0;
@@ -339,9 +355,9 @@ public sealed class Bvh : AccelerationStructure
                 for (int i = 0; i < count; i++)
                 {
                     var c = _nodes[slots[i]];
-                    if (c.Count == 0 && c.Bounds.SurfaceArea > bestArea)
+                    if (c.Count == 0 && c.SurfaceArea > bestArea)
                     {
-                        bestArea = c.Bounds.SurfaceArea;
+                        bestArea = c.SurfaceArea;
                         best = i;
                     }
                 }
@@ -357,8 +373,7 @@ public sealed class Bvh : AccelerationStructure
             }
         }
 
-        int index = wide.Count;
-        wide.Add(default);
+        int index = _wideCount++;
         Span<double> minX = stackalloc double[4], minY = stackalloc double[4], minZ = stackalloc double[4];
         Span<double> maxX = stackalloc double[4], maxY = stackalloc double[4], maxZ = stackalloc double[4];
         Span<int> refs = stackalloc int[4];
@@ -372,25 +387,24 @@ public sealed class Bvh : AccelerationStructure
             }
 
             var c = _nodes[slots[i]];
-            minX[i] = c.Bounds.Min.x;
-            minY[i] = c.Bounds.Min.y;
-            minZ[i] = c.Bounds.Min.z;
-            maxX[i] = c.Bounds.Max.x;
-            maxY[i] = c.Bounds.Max.y;
-            maxZ[i] = c.Bounds.Max.z;
+            minX[i] = c.Min.GetElement(0);
+            minY[i] = c.Min.GetElement(1);
+            minZ[i] = c.Min.GetElement(2);
+            maxX[i] = c.Max.GetElement(0);
+            maxY[i] = c.Max.GetElement(1);
+            maxZ[i] = c.Max.GetElement(2);
             if (c.Count > 0)
             {
-                refs[i] = ~leafOffsets.Count;
-                leafOffsets.Add(c.Offset);
-                leafCounts.Add(c.Count);
+                refs[i] = ~_leafCount;
+                _leaves[_leafCount++] = new BvhLeaf { First = c.Offset, Count = c.Count };
             }
             else
             {
-                refs[i] = Collapse(slots[i], wide, leafOffsets, leafCounts);
+                refs[i] = Collapse(slots[i]);
             }
         }
 
-        wide[index] = new Bvh4Node
+        _wide[index] = new Bvh4Node
         {
             MinX = Vector256.Create(minX[0], minX[1], minX[2], minX[3]),
             MinY = Vector256.Create(minY[0], minY[1], minY[2], minY[3]),

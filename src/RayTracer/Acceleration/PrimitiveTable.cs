@@ -1,4 +1,5 @@
 using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
 using RayTracer.Bounds;
 using RayTracer.Geometry;
 using RayTracer.Geometry.Meshes;
@@ -12,7 +13,8 @@ namespace RayTracer.Acceleration;
 /// The primitives of an acceleration structure in the order its leaves refer to them. Triangles are
 /// copied into a packed array in the form their test wants (<see cref="ITriangle.Test"/>: vertex and
 /// edges, three vertices, or Plücker edge lines and plane) and tested inline; an array is allocated
-/// only when some triangle uses its form. Other objects go through their virtual
+/// only when some triangle uses its form, and only when the structure asks (<see cref="PackTriangles"/>),
+/// so a structure with its own copy of the triangles does not pay for a second. Other objects go through their virtual
 /// <see cref="GeometricObject.Intersect"/>. Unbounded objects (planes) are kept aside and tested
 /// against every ray. Shadow-casting flags are read when the structure is built.
 /// </summary>
@@ -23,75 +25,152 @@ internal sealed class PrimitiveTable
     private PluckerTriangle[] _lines = [];
     private PrimitiveKind[] _kind;
     private bool[] _castsShadows;
+    private Point3D[]? _centroids;
+
+    /// <summary>Objects per work item of the parallel passes over all of them.</summary>
+    private const int ChunkSize = 1 << 14;
 
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     public PrimitiveTable(IReadOnlyList<GeometricObject> objects)
     {
         ArgumentNullException.ThrowIfNull(objects);
-        var bounded = new List<GeometricObject>(objects.Count);
-        var bounds = new List<BoundingBox>(objects.Count);
-        var unbounded = new List<GeometricObject>();
-        foreach (var o in objects)
+        var source = objects as GeometricObject[] ?? [.. objects];
+        int n = source.Length;
+
+        // Boxes in parallel (a virtual call each); the objects are sorted into bounded and unbounded
+        // ones only when some box is empty or infinite.
+        var boxes = new BoundingBox[n];
+        int unusual = 0;
+        ChunkedLoop.For(n, ChunkSize, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
         {
-            var box = o.GetBoundingBox();
-            if (box.IsEmpty)
+            bool any = false;
+            for (int i = start; i < end; i++)
             {
-                continue; // nothing to hit
+                boxes[i] = source[i].GetBoundingBox();
+                any |= boxes[i].IsEmpty || !boxes[i].IsFinite;
             }
 
-            if (box.IsFinite)
+            if (any)
+                Volatile.Write(ref unusual, 1);
+        });
+
+        if (unusual == 0)
+        {
+            Objects = ReferenceEquals(source, objects) ? [.. source] : source;
+            Bounds = boxes;
+            Unbounded = [];
+        }
+        else
+        {
+            var bounded = new List<GeometricObject>(n);
+            var bounds = new List<BoundingBox>(n);
+            var unbounded = new List<GeometricObject>();
+            for (int i = 0; i < n; i++)
             {
-                bounded.Add(o);
-                bounds.Add(box);
+                if (boxes[i].IsEmpty)
+                    continue; // nothing to hit
+                if (boxes[i].IsFinite)
+                {
+                    bounded.Add(source[i]);
+                    bounds.Add(boxes[i]);
+                }
+                else
+                {
+                    unbounded.Add(source[i]);
+                }
             }
-            else
-            {
-                unbounded.Add(o);
-            }
+
+            Objects = [.. bounded];
+            Bounds = [.. bounds];
+            Unbounded = [.. unbounded];
         }
 
-        Objects = [.. bounded];
-        Bounds = [.. bounds];
-        Unbounded = [.. unbounded];
-        Centroids = new Point3D[Objects.Length];
-        _kind = new PrimitiveKind[Objects.Length];
-        _castsShadows = new bool[Objects.Length];
-        SceneBounds = BoundingBox.Empty;
-        for (int i = 0; i < Objects.Length; i++)
+        n = Objects.Length;
+        _kind = new PrimitiveKind[n];
+        _castsShadows = new bool[n];
+
+        var sceneBounds = BoundingBox.Empty;
+        var gate = new object();
+        ChunkedLoop.For(n, ChunkSize, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
         {
-            Centroids[i] = Bounds[i].Centroid;
-            SceneBounds.Include(Bounds[i]);
-            _castsShadows[i] = Objects[i].CastsShadows;
-            if (Objects[i] is ITriangle tri)
-                Pack(i, tri);
+            // Componentwise, so that nothing here waits for tiered compilation.
+            double x0 = double.PositiveInfinity, y0 = x0, z0 = x0, x1 = double.NegativeInfinity, y1 = x1, z1 = x1;
+            for (int i = start; i < end; i++)
+            {
+                var o = Objects[i];
+                ref readonly var b = ref Bounds[i];
+                x0 = Math.Min(x0, b.Min.x);
+                y0 = Math.Min(y0, b.Min.y);
+                z0 = Math.Min(z0, b.Min.z);
+                x1 = Math.Max(x1, b.Max.x);
+                y1 = Math.Max(y1, b.Max.y);
+                z1 = Math.Max(z1, b.Max.z);
+                _castsShadows[i] = o.CastsShadows;
+                _kind[i] = o is ITriangle tri ? KindOf(tri.Test) : PrimitiveKind.Object;
+            }
+
+            lock (gate)
+                sceneBounds.Include(new BoundingBox(new Point3D(x0, y0, z0), new Point3D(x1, y1, z1)));
+        });
+
+        SceneBounds = sceneBounds;
+    }
+
+    /// <summary>
+    /// Copies the triangles into the packed arrays their tests read, in the current order; a structure
+    /// calls it once its order is final (after <see cref="Permute"/>) and only when it tests primitives
+    /// through <see cref="Distance(int, in Ray, double)"/> or <see cref="Occludes(int, in Ray, double)"/>.
+    /// </summary>
+    public void PackTriangles()
+    {
+        int n = Objects.Length;
+        bool plucker = false, edges = false, triangles = false;
+        foreach (var kind in _kind)
+        {
+            plucker |= kind == PrimitiveKind.Plucker;
+            edges |= kind == PrimitiveKind.PluckerEdges;
+            triangles |= kind is PrimitiveKind.MollerTrumbore or PrimitiveKind.Algebraic;
+        }
+
+        _vertices = plucker ? new PackedTriangleVertices[n] : [];
+        _lines = edges ? new PluckerTriangle[n] : [];
+        _triangles = triangles ? new PackedTriangle[n] : [];
+        if (plucker || edges || triangles)
+        {
+            ChunkedLoop.For(n, ChunkSize, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
+            {
+                for (int i = start; i < end; i++)
+                {
+                    if (_kind[i] != PrimitiveKind.Object)
+                        Pack(i, (ITriangle)Objects[i]);
+                }
+            });
         }
     }
+
+    private static PrimitiveKind KindOf(TriangleTest test) => test switch
+    {
+        TriangleTest.Plucker => PrimitiveKind.Plucker,
+        TriangleTest.PluckerEdges => PrimitiveKind.PluckerEdges,
+        TriangleTest.Algebraic => PrimitiveKind.Algebraic,
+        _ => PrimitiveKind.MollerTrumbore,
+    };
 
     private void Pack(int i, ITriangle tri)
     {
         Point3D v0 = tri.V0, v1 = tri.V1, v2 = tri.V2;
-        switch (tri.Test)
+        switch (_kind[i])
         {
-            case TriangleTest.Plucker:
-                Allocate(ref _vertices)[i] = new PackedTriangleVertices { V0 = v0, V1 = v1, V2 = v2 };
-                _kind[i] = PrimitiveKind.Plucker;
+            case PrimitiveKind.Plucker:
+                _vertices[i] = new PackedTriangleVertices { V0 = v0, V1 = v1, V2 = v2 };
                 break;
-            case TriangleTest.PluckerEdges:
-                Allocate(ref _lines)[i] = PluckerTriangle.From(v0, v1, v2);
-                _kind[i] = PrimitiveKind.PluckerEdges;
+            case PrimitiveKind.PluckerEdges:
+                _lines[i] = PluckerTriangle.From(v0, v1, v2);
                 break;
             default:
-                Allocate(ref _triangles)[i] = new PackedTriangle { V0 = v0, E1 = v1 - v0, E2 = v2 - v0 };
-                _kind[i] = tri.Test == TriangleTest.Algebraic ? PrimitiveKind.Algebraic : PrimitiveKind.MollerTrumbore;
+                _triangles[i] = PackedTriangle.From(v0, v1, v2);
                 break;
         }
-    }
-
-    private T[] Allocate<T>(ref T[] array)
-    {
-        if (array.Length == 0)
-            array = new T[Objects.Length];
-        return array;
     }
 
     public GeometricObject[] Objects { get; private set; }
@@ -101,7 +180,21 @@ internal sealed class PrimitiveTable
     /// <summary>Per-primitive bounds; only needed while building (see <see cref="ReleaseBuildData"/>).</summary>
     public BoundingBox[] Bounds { get; private set; }
 
-    public Point3D[] Centroids { get; private set; }
+    /// <summary>Centres of <see cref="Bounds"/>, computed when first asked for.</summary>
+    public Point3D[] Centroids
+    {
+        get
+        {
+            if (_centroids is null)
+            {
+                _centroids = new Point3D[Bounds.Length];
+                for (int i = 0; i < _centroids.Length; i++)
+                    _centroids[i] = Bounds[i].Centroid;
+            }
+
+            return _centroids;
+        }
+    }
 
     public BoundingBox SceneBounds;
 
@@ -116,7 +209,7 @@ internal sealed class PrimitiveTable
     {
         Objects = Gather(Objects, order);
         Bounds = Gather(Bounds, order);
-        Centroids = Gather(Centroids, order);
+        _centroids = _centroids is null ? null : Gather(_centroids, order);
         _triangles = Gather(_triangles, order);
         _vertices = Gather(_vertices, order);
         _lines = Gather(_lines, order);
@@ -127,15 +220,23 @@ internal sealed class PrimitiveTable
     /// <summary>Whether primitive i is a triangle tested with Möller–Trumbore, so it can join a four-lane group.</summary>
     public bool IsMollerTrumbore(int i) => _kind[i] == PrimitiveKind.MollerTrumbore;
 
-    /// <summary>The packed form of a triangle for which <see cref="IsMollerTrumbore"/> holds.</summary>
-    public ref readonly PackedTriangle Packed(int i) => ref _triangles[i];
+    /// <summary>The Möller–Trumbore form of a triangle for which <see cref="IsMollerTrumbore"/> holds, computed from the object.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public PackedTriangle MollerTrumbore(int i)
+    {
+        // Mesh triangles, by far the most common, without the interface calls.
+        if (Objects[i] is MeshTriangle mesh)
+            return PackedTriangle.From(mesh.V0, mesh.V1, mesh.V2);
+        var tri = (ITriangle)Objects[i];
+        return PackedTriangle.From(tri.V0, tri.V1, tri.V2);
+    }
 
     public bool CastsShadows(int i) => _castsShadows[i];
 
     public void ReleaseBuildData()
     {
         Bounds = [];
-        Centroids = [];
+        _centroids = [];
     }
 
     /// <summary>Hit distance below tMax, or +∞.</summary>
@@ -227,12 +328,14 @@ internal sealed class PrimitiveTable
             return source;
         }
 
-        var result = new T[order.Length];
+        var result = GC.AllocateUninitializedArray<T>(order.Length);
         const int PerTask = 1 << 16;
-        ChunkedLoop.For(order.Length, PerTask, (start, end) =>
+        ChunkedLoop.For(order.Length, PerTask, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
         {
+            // Through a reference, which skips the array-covariance check of each element store.
+            ref var first = ref MemoryMarshal.GetArrayDataReference(result);
             for (int i = start; i < end; i++)
-                result[i] = source[order[i]];
+                Unsafe.Add(ref first, i) = source[order[i]];
         });
         return result;
     }

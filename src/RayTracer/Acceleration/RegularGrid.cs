@@ -96,13 +96,8 @@ public sealed class RegularGrid : AccelerationStructure
         }
 
         Table.ReleaseBuildData();
+        Table.PackTriangles();
     }
-
-    public int CellsX => _nx;
-
-    public int CellsY => _ny;
-
-    public int CellsZ => _nz;
 
     private protected override bool TraverseNearest(in Ray ray, ref double t, ref int primitive)
     {

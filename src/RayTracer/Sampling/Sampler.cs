@@ -29,9 +29,6 @@ public abstract class Sampler
     public int NumSamples { get; }
     public int NumSets { get; }
 
-    /// <summary>Exponent of the cosine-power hemisphere distribution, once mapped.</summary>
-    public double HemisphereExponent { get; private set; } = double.NaN;
-
     protected Sampler(int numSamples, int numSets = 83, ulong seed = 12345)
     {
         if (numSamples < 1)
@@ -124,7 +121,6 @@ public abstract class Sampler
 
     public void MapSamplesToHemisphere(double e)
     {
-        HemisphereExponent = e;
         _hemisphereSamples = Array.ConvertAll(_squareSamples, p => CosinePowerHemisphere(p, e));
     }
 

@@ -72,4 +72,32 @@ public class EmbreeScene_AgreesWithBvh
         Assert.True(embree.IntersectAny(ray, 2.5));
         Assert.False(embree.IntersectAny(new Ray(new Point3D(0, 0, 3), new Vector3D(0, 0, 1)), 10.0));
     }
+
+    [EmbreeFact]
+    public void A_scene_on_another_scenes_device_answers_alike_and_leaves_the_device_to_it()
+    {
+        var mesh = ThroughputReport.DisplacedSphere(2000);
+        var other = ThroughputReport.DisplacedSphere(500);
+        using var host = EmbreeScene.TryCreate(mesh, 1, out var problem);
+        Assert.True(host is not null, problem);
+        var rays = ThroughputReport.PrimaryRays(40, 30);
+        using (var same = host.TryCreateOnSameDevice(mesh, out problem))
+        {
+            Assert.True(same is not null, problem);
+            foreach (var ray in rays)
+            {
+                bool hit = host.IntersectNearest(ray, double.PositiveInfinity, out double t, out int primitive);
+                Assert.Equal(hit, same.IntersectNearest(ray, double.PositiveInfinity, out double ts, out int primitiveSame));
+                Assert.Equal(t, ts);
+                Assert.Equal(primitive, primitiveSame);
+            }
+        }
+
+        // Disposing the second scene must not release the device: the host still answers, and builds again.
+        using var again = host.TryCreateOnSameDevice(other, out problem);
+        Assert.True(again is not null, problem);
+        var centre = new Ray(new Point3D(0, 0, 3), new Vector3D(0, 0, -1));
+        Assert.True(host.IntersectNearest(centre, double.PositiveInfinity, out _, out _));
+        Assert.True(again.IntersectNearest(centre, double.PositiveInfinity, out _, out _));
+    }
 }

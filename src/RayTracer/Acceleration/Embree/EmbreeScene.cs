@@ -6,18 +6,23 @@ using RayTracer.Tracing;
 namespace RayTracer.Acceleration.Embree;
 
 /// <summary>
-/// One Embree device and scene holding one triangle mesh, its vertices rounded to float as Embree stores
-/// them; queried one ray at a time like our structures, for side-by-side measurements.
+/// An Embree scene holding one triangle mesh, its vertices rounded to float as Embree stores them, on a
+/// device of its own or on another scene's; queried one ray at a time like our structures, for
+/// side-by-side measurements.
 /// </summary>
 internal sealed unsafe class EmbreeScene : IRayQueries, IDisposable
 {
     private nint _device;
     private nint _scene;
 
-    private EmbreeScene(nint device, nint scene)
+    // A scene made on another scene's device leaves the device to that scene.
+    private readonly bool _ownsDevice;
+
+    private EmbreeScene(nint device, nint scene, bool ownsDevice)
     {
         _device = device;
         _scene = scene;
+        _ownsDevice = ownsDevice;
     }
 
     /// <summary>
@@ -40,6 +45,32 @@ internal sealed unsafe class EmbreeScene : IRayQueries, IDisposable
             return null;
         }
 
+        var scene = TryBuild(device, mesh, out problem);
+        if (scene == 0)
+        {
+            EmbreeLibrary.ReleaseDevice(device);
+            return null;
+        }
+
+        return new EmbreeScene(device, scene, ownsDevice: true);
+    }
+
+    /// <summary>
+    /// Builds another scene on this one's device, whose threads are already running: what a build costs
+    /// once the library is started, as our builds run on a thread pool that is already started. This
+    /// scene must outlive the new one.
+    /// </summary>
+    public EmbreeScene? TryCreateOnSameDevice(Mesh mesh, out string? problem)
+    {
+        ArgumentNullException.ThrowIfNull(mesh);
+        ObjectDisposedException.ThrowIf(_device == 0, this);
+        var scene = TryBuild(_device, mesh, out problem);
+        return scene == 0 ? null : new EmbreeScene(_device, scene, ownsDevice: false);
+    }
+
+    /// <summary>A committed scene holding the mesh, or 0 with the reason.</summary>
+    private static nint TryBuild(nint device, Mesh mesh, out string? problem)
+    {
         var scene = EmbreeLibrary.NewScene(device);
         var geometry = EmbreeLibrary.NewGeometry(device, EmbreeLibrary.GeometryTypeTriangle);
         var vertices = mesh.Vertices;
@@ -53,8 +84,7 @@ internal sealed unsafe class EmbreeScene : IRayQueries, IDisposable
             problem = $"rtcSetNewGeometryBuffer failed (error {EmbreeLibrary.GetDeviceError(device)})";
             EmbreeLibrary.ReleaseGeometry(geometry);
             EmbreeLibrary.ReleaseScene(scene);
-            EmbreeLibrary.ReleaseDevice(device);
-            return null;
+            return 0;
         }
 
         for (int i = 0; i < vertices.Length; i++)
@@ -76,11 +106,11 @@ internal sealed unsafe class EmbreeScene : IRayQueries, IDisposable
         {
             problem = $"building the Embree scene failed (RTCError {error})";
             EmbreeLibrary.ReleaseScene(scene);
-            EmbreeLibrary.ReleaseDevice(device);
-            return null;
+            return 0;
         }
 
-        return new EmbreeScene(device, scene);
+        problem = null;
+        return scene;
     }
 
     /// <summary>Nearest hit with t in (ray.tMin, <paramref name="tMax"/>): its distance and triangle index (as in the mesh).</summary>
@@ -216,10 +246,8 @@ internal sealed unsafe class EmbreeScene : IRayQueries, IDisposable
             _scene = 0;
         }
 
-        if (_device != 0)
-        {
+        if (_device != 0 && _ownsDevice)
             EmbreeLibrary.ReleaseDevice(_device);
-            _device = 0;
-        }
+        _device = 0;
     }
 }
