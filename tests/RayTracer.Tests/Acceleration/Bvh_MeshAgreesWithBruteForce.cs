@@ -38,21 +38,9 @@ public class Bvh_MeshAgreesWithBruteForce
         return ([.. soup.CreateTriangles(smooth: false), .. sphere.CreateTriangles(smooth: false)], soup);
     }
 
-    private static double BruteForce(GeometricObject[] triangles, in Ray ray)
-    {
-        double best = double.PositiveInfinity;
-        foreach (var triangle in triangles)
-        {
-            if (triangle.Intersect(ray, out double t) && t < best)
-                best = t;
-        }
-
-        return best;
-    }
-
     private static void AssertAgrees(Bvh bvh, GeometricObject[] triangles, in Ray ray, double tMax)
     {
-        double expected = BruteForce(triangles, ray);
+        double expected = BruteForce.Nearest(triangles, ray);
         bool hit = bvh.IntersectNearest(ray, double.PositiveInfinity, out double t, out int primitive);
         Assert.Equal(double.IsFinite(expected), hit);
         if (hit)

@@ -59,18 +59,6 @@ public class Bvh_ParallelBuildMatchesSerial
         return new Mesh(vertices, [.. Enumerable.Range(0, vertices.Length)]).CreateTriangles(smooth: false);
     }
 
-    private static double BruteForce(GeometricObject[] triangles, in Ray ray)
-    {
-        double best = double.PositiveInfinity;
-        foreach (var triangle in triangles)
-        {
-            if (triangle.Intersect(ray, out double t) && t < best)
-                best = t;
-        }
-
-        return best;
-    }
-
     private static void AssertSameTrees(GeometricObject[] triangles, int leafSize, Func<SeededRandom, Ray> rays, int rayCount)
     {
         var serial = new Bvh(triangles, leafSize, BvhBuilder.Parallelism.None);
@@ -82,7 +70,7 @@ public class Bvh_ParallelBuildMatchesSerial
         for (int n = 0; n < rayCount; n++)
         {
             var ray = rays(random);
-            double expected = BruteForce(triangles, ray);
+            double expected = BruteForce.Nearest(triangles, ray);
             bool hit = parallel.IntersectNearest(ray, double.PositiveInfinity, out double t, out int primitive);
             Assert.Equal(double.IsFinite(expected), hit);
             Assert.Equal(serial.IntersectNearest(ray, double.PositiveInfinity, out double ts, out int primitiveSerial), hit);
