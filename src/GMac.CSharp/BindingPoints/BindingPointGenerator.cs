@@ -108,9 +108,7 @@ internal static class BindingPointGenerator
         if (ScalarTypeOf(file, point, context, diagnostics) is not { } scalarType) return new GeneratedRegion(point, null, null);
         if (FusedMultiplyAddOf(file, point, context, diagnostics) is not { } fma) return new GeneratedRegion(point, null, null);
         var batches = point.Specs.OfType<BatchSpec>().ToList();
-        foreach (var extra in batches.Skip(1))
-            diagnostics.Add(new(DiagnosticCodes.InvalidBatch, SourceSpan.At(file.Path, extra.Line, extra.Column),
-                $"a second GMac.Batch line; the binding point's batch index is already given at line {batches[0].Line}"));
+        ReportSecondLines(file, batches, DiagnosticCodes.InvalidBatch, "Batch", "batch index", diagnostics);
         if (batches.Count > 1) return new GeneratedRegion(point, null, null);
         GenerationOutcome outcome;
         string? code;
@@ -154,6 +152,15 @@ internal static class BindingPointGenerator
         return code is null ? new GeneratedRegion(point, outcome, null) : new GeneratedRegion(point, outcome, code) { ScalarType = scalarType, FusedMultiplyAdd = fma };
     }
 
+    /// <summary>A binding point gives each of Type, Fma and Batch once: every later line of the kind is an error at that line.</summary>
+    private static void ReportSecondLines<T>(BindingPointFile file, List<T> lines, DiagnosticDescriptor descriptor, string kind, string what,
+        List<Diagnostic> diagnostics) where T : BindingSpec
+    {
+        foreach (var extra in lines.Skip(1))
+            diagnostics.Add(new(descriptor, SourceSpan.At(file.Path, extra.Line, extra.Column),
+                $"a second GMac.{kind} line; the binding point's {what} is already given at line {lines[0].Line}"));
+    }
+
     /// <summary>
     /// The binding point's <c>//GMac.Type</c>, else the run's scalar type; null (with a diagnostic at
     /// the line) for a type gmac does not emit or a second Type line.
@@ -161,9 +168,7 @@ internal static class BindingPointGenerator
     private static string? ScalarTypeOf(BindingPointFile file, BindingPoint point, GenerationContext context, List<Diagnostic> diagnostics)
     {
         var lines = point.Specs.OfType<ScalarTypeSpec>().ToList();
-        foreach (var extra in lines.Skip(1))
-            diagnostics.Add(new(DiagnosticCodes.InvalidScalarType, SourceSpan.At(file.Path, extra.Line, extra.Column),
-                $"a second GMac.Type line; the binding point's type is already given at line {lines[0].Line}"));
+        ReportSecondLines(file, lines, DiagnosticCodes.InvalidScalarType, "Type", "type", diagnostics);
         if (lines.Count == 0) return context.DefaultScalarType;
         var name = lines[0].TypeName;
         if (!CSharpEmitter.ScalarTypes.Contains(name))
@@ -190,9 +195,7 @@ internal static class BindingPointGenerator
     private static bool? FusedMultiplyAddOf(BindingPointFile file, BindingPoint point, GenerationContext context, List<Diagnostic> diagnostics)
     {
         var lines = point.Specs.OfType<FusedMultiplyAddSpec>().ToList();
-        foreach (var extra in lines.Skip(1))
-            diagnostics.Add(new(DiagnosticCodes.InvalidFusedMultiplyAdd, SourceSpan.At(file.Path, extra.Line, extra.Column),
-                $"a second GMac.Fma line; the binding point's choice is already given at line {lines[0].Line}"));
+        ReportSecondLines(file, lines, DiagnosticCodes.InvalidFusedMultiplyAdd, "Fma", "choice", diagnostics);
         if (lines.Count == 0) return context.DefaultFusedMultiplyAdd;
         if (lines[0].Enabled is null)
         {

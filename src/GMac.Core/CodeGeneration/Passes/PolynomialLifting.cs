@@ -19,7 +19,7 @@ internal static class PolynomialLifting
     public static bool TryLift(Expr e, Dictionary<Expr, Scalar?>? known, out Scalar polynomial)
     {
         polynomial = Scalar.Zero;
-        var lifted = Lift(e, known);
+        var lifted = Lift(e, known, null);
         if (lifted is null) return false;
         polynomial = lifted;
         return true;
@@ -30,53 +30,34 @@ internal static class PolynomialLifting
     /// replaced by that polynomial (a temporary by the polynomial it holds); other variables stay
     /// as they are. Null where <paramref name="e"/> is not a polynomial of those.
     /// </summary>
-    public static Scalar? LiftThrough(Expr e, Func<string, Scalar?> resolve) => e switch
-    {
-        VariableExpr v => resolve(v.Name) ?? Scalar.Variable(v.Name),
-        ConstantExpr { Exact: { } r } => Scalar.Constant(r),
-        NegateExpr n => LiftThrough(n.Operand, resolve) is { } operand ? -operand : null,
-        PowerExpr { Exponent: > 0 } p => LiftThrough(p.Base, resolve) is { } b ? Scalar.IntegerPower(b, p.Exponent) : null,
-        SumExpr or ProductExpr => Combine(e, resolve),
-        _ => null,
-    };
+    public static Scalar? LiftThrough(Expr e, Func<string, Scalar?> resolve) => Lift(e, null, resolve);
 
-    private static Scalar? Combine(Expr e, Func<string, Scalar?> resolve)
+    /// <param name="resolve">The polynomial a variable stands for, or null to keep the variable.</param>
+    private static Scalar? Lift(Expr e, Dictionary<Expr, Scalar?>? known, Func<string, Scalar?>? resolve)
     {
-        var isSum = e is SumExpr;
-        var result = isSum ? Scalar.Zero : Scalar.One;
-        foreach (var c in e.Children)
-        {
-            if (LiftThrough(c, resolve) is not { } lifted) return null;
-            result = isSum ? result + lifted : result * lifted;
-        }
-        return result;
-    }
-
-    private static Scalar? Lift(Expr e, Dictionary<Expr, Scalar?>? known)
-    {
-        if (e.IsLeaf || known is null) return LiftNode(e, known);
+        if (e.IsLeaf || known is null) return LiftNode(e, known, resolve);
         if (known.TryGetValue(e, out var lifted)) return lifted;
-        return known[e] = LiftNode(e, known);
+        return known[e] = LiftNode(e, known, resolve);
     }
 
-    private static Scalar? LiftNode(Expr e, Dictionary<Expr, Scalar?>? known)
+    private static Scalar? LiftNode(Expr e, Dictionary<Expr, Scalar?>? known, Func<string, Scalar?>? resolve)
     {
         switch (e)
         {
             case ConstantExpr { Exact: { } r }:
                 return Scalar.Constant(r);
             case VariableExpr v:
-                return Scalar.Variable(v.Name);
+                return resolve?.Invoke(v.Name) ?? Scalar.Variable(v.Name);
             case NegateExpr n:
-                return Lift(n.Operand, known) is { } operand ? -operand : null;
+                return Lift(n.Operand, known, resolve) is { } operand ? -operand : null;
             case PowerExpr { Exponent: > 0 } p:
-                return Lift(p.Base, known) is { } b ? Scalar.IntegerPower(b, p.Exponent) : null;
+                return Lift(p.Base, known, resolve) is { } b ? Scalar.IntegerPower(b, p.Exponent) : null;
             case SumExpr s:
             {
                 var sum = Scalar.Zero;
                 foreach (var c in s.Children)
                 {
-                    if (Lift(c, known) is not { } term) return null;
+                    if (Lift(c, known, resolve) is not { } term) return null;
                     sum += term;
                 }
                 return sum;
@@ -86,7 +67,7 @@ internal static class PolynomialLifting
                 var product = Scalar.One;
                 foreach (var c in p.Children)
                 {
-                    if (Lift(c, known) is not { } factor) return null;
+                    if (Lift(c, known, resolve) is not { } factor) return null;
                     product *= factor;
                 }
                 return product;
