@@ -8,9 +8,11 @@ namespace GMac.Benchmarks.Applications;
 /// to back (in alternating order), the ratio taken within each pair and the median over the pairs.
 /// On a shared machine whose speed drifts over seconds, separate runs of the two variants can land
 /// in different phases and move a ratio by 20 % or more; two slices a few milliseconds apart see the
-/// same machine.
+/// same machine. With <paramref name="warmUp"/>, both variants first run until the JIT has its final
+/// code for them (<see cref="JitWarmUp"/>); without, once each (for callers that warm up themselves,
+/// or quick runs).
 /// </summary>
-public sealed class PairedRatioTimer(int pairs, TimeSpan sliceTime)
+public sealed class PairedRatioTimer(int pairs, TimeSpan sliceTime, TimeSpan? warmUp = null)
 {
     public double GeneratedOverHand(IGaKernel kernel) =>
         Pair(kernel.Count, () => kernel.Time(Variant.Generated), () => kernel.Time(Variant.Hand)).Ratio;
@@ -21,7 +23,12 @@ public sealed class PairedRatioTimer(int pairs, TimeSpan sliceTime)
     /// </summary>
     public (double Ratio, double FirstNs, double SecondNs) Pair(int items, Action first, Action second)
     {
-        first(); // JIT and caches
+        if (warmUp is { } slice)
+        {
+            JitWarmUp.Run(first, slice);
+            JitWarmUp.Run(second, slice);
+        }
+        first(); // caches
         second();
         var ratios = new double[pairs];
         var (a, b) = (new double[pairs], new double[pairs]);

@@ -6,11 +6,8 @@ namespace GMac.Benchmarks.Applications;
 
 /// <summary>
 /// Times a kernel's vector forms against its generated scalar code (and the generated Vector256
-/// against hand-written Vector256 code), in pairs. Each form first runs in slices of <paramref name="warmUp"/>
-/// until one made the JIT compile nothing:
-/// the vector functions of .NET (Sin, SinCos, Exp…) were measured up to 10 times slower in a process's
-/// first runs than after the JIT's final code replaced the first (late, on a loaded machine); timed
-/// before that, a kernel calling them looks slower than its scalar code.
+/// against hand-written Vector256 code), in pairs, each form first run until the JIT has its final
+/// code (<see cref="JitWarmUp"/>, in slices of <paramref name="warmUp"/>).
 /// </summary>
 public sealed class VectorTimer(PairedRatioTimer timer, TimeSpan warmUp)
 {
@@ -31,16 +28,5 @@ public sealed class VectorTimer(PairedRatioTimer timer, TimeSpan warmUp)
             v512?.SecondNs, v512?.Ratio, hand?.SecondNs, hand?.Ratio);
     }
 
-    /// <summary>Runs in slices of the warm-up time until a whole slice made the JIT compile nothing (at most 5 s).</summary>
-    private void WarmUp(Action run)
-    {
-        var total = System.Diagnostics.Stopwatch.StartNew();
-        long before;
-        do
-        {
-            before = System.Runtime.JitInfo.GetCompiledMethodCount();
-            var slice = System.Diagnostics.Stopwatch.StartNew();
-            do run(); while (slice.Elapsed < warmUp);
-        } while (System.Runtime.JitInfo.GetCompiledMethodCount() != before && total.Elapsed < TimeSpan.FromSeconds(5));
-    }
+    private void WarmUp(Action run) => JitWarmUp.Run(run, warmUp);
 }

@@ -11,25 +11,39 @@ namespace GMac.Benchmarks.Reporting;
 /// <c>kernels NAME…</c>: the report's scalar figures for a few kernels only (operations of the
 /// generated and hand code, the paired generated / hand time ratio, the accuracy families), in
 /// seconds rather than the full report's minutes, for checking a change of the generator.
+/// <c>kernels --ratio [--hand-first] NAME…</c> prints only the paired ratios, one machine-readable
+/// line per kernel (<see cref="RatioLine"/>): the report runs it in fresh processes.
 /// </summary>
 public static class KernelsCommand
 {
     private const int Pairs = 41;
-    private const int SliceMs = 25;
+
+    /// <summary>Fewer pairs per process in ratio mode: the report runs it in several processes per kernel.</summary>
+    public const int RatioPairs = 21;
+    public const int SliceMs = 25;
     private const int AccuracyItems = 400;
+
+    /// <summary>Slices of each variant run until the JIT has its final code, before the pairs.</summary>
+    public static readonly TimeSpan WarmUpSlice = TimeSpan.FromMilliseconds(100);
+
+    public const string RatioLine = "ratio";
 
     public static int Run(IReadOnlyList<string> args, TextWriter output, TextWriter error)
     {
+        var ratioOnly = args.Contains("--ratio");
+        var handFirst = args.Contains("--hand-first");
+        args = args.Where(a => a is not ("--ratio" or "--hand-first")).ToArray();
         if (args.Count == 0 || args.Any(a => !KernelCatalog.Names.Contains(a)))
         {
-            error.WriteLine($"usage: GMac.Benchmarks kernels NAME... (known: {string.Join(", ", KernelCatalog.Names)})");
+            error.WriteLine($"usage: GMac.Benchmarks kernels [--ratio [--hand-first]] NAME... (known: {string.Join(", ", KernelCatalog.Names)})");
             return 2;
         }
+        if (ratioOnly) return RatiosOnly(args, handFirst, output);
         var dsl = Path.Combine(RepositoryRoot(), "dsl");
         var project = DslProject.Load(dsl);
         var counter = new GeneratedOperationCounter(new MacroCodeGenerator(project));
         var harness = new AccuracyHarness(new MacroCodeGenerator(project), AccuracyItems, GaApplicationBenchmarks.Seed);
-        var paired = new PairedRatioTimer(Pairs, TimeSpan.FromMilliseconds(SliceMs));
+        var paired = new PairedRatioTimer(Pairs, TimeSpan.FromMilliseconds(SliceMs), WarmUpSlice);
         output.WriteLine($"load average {(File.Exists("/proc/loadavg") ? File.ReadAllText("/proc/loadavg").Trim() : "unknown")}; " +
                          $"paired ratio: median of {Pairs} pairs of {SliceMs} ms slices");
         foreach (var name in args)
@@ -45,6 +59,32 @@ public static class KernelsCommand
         }
         return 0;
     }
+
+    /// <summary>
+    /// One line per kernel: <c>ratio NAME generated/hand generated-ns hand-ns</c>. With
+    /// <paramref name="handFirst"/> the hand code is run (and so compiled) first: where the JIT places
+    /// code and when it replaces it differ from process to process and by what came first.
+    /// </summary>
+    private static int RatiosOnly(IReadOnlyList<string> names, bool handFirst, TextWriter output)
+    {
+        var paired = new PairedRatioTimer(RatioPairs, TimeSpan.FromMilliseconds(SliceMs), WarmUpSlice);
+        foreach (var name in names)
+        {
+            var kernel = KernelCatalog.Create(name);
+            kernel.Setup(GaApplicationBenchmarks.BatchSize, GaApplicationBenchmarks.Seed);
+            KernelAgreement.Verify(kernel);
+            void Generated() => kernel.Time(Variant.Generated);
+            void Hand() => kernel.Time(Variant.Hand);
+            var (ratio, generatedNs, handNs) = handFirst
+                ? Invert(paired.Pair(kernel.Count, Hand, Generated))
+                : paired.Pair(kernel.Count, Generated, Hand);
+            output.WriteLine(FormattableString.Invariant($"{RatioLine} {name} {ratio:R} {generatedNs:R} {handNs:R}"));
+        }
+        return 0;
+    }
+
+    /// <summary>Hand / generated figures as generated / hand: the median of the inverses is the inverse of the median (odd count).</summary>
+    private static (double, double, double) Invert((double Ratio, double FirstNs, double SecondNs) r) => (1 / r.Ratio, r.SecondNs, r.FirstNs);
 
     private static string RepositoryRoot()
     {

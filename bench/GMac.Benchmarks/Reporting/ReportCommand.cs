@@ -42,6 +42,9 @@ public static class ReportCommand
     private const int PairedRatioPairs = 41;
     private const int PairedRatioSliceMs = 25;
 
+    /// <summary>Fresh processes per kernel for its generated / hand ratio (<see cref="ProcessRatioTimer"/>).</summary>
+    private const int RatioProcesses = 5;
+
     private const int VectorOnlyPairs = 11;
     private const int VectorOnlySliceMs = 10;
 
@@ -105,9 +108,13 @@ public static class ReportCommand
         else
         {
             timings = BenchmarkDotNetTimer.MeasureAll(Path.Combine(Path.GetTempPath(), "gmac-bench-artifacts"));
-            log.WriteLine("report: timing generated against hand in pairs");
-            var paired = new PairedRatioTimer(PairedRatioPairs, TimeSpan.FromMilliseconds(PairedRatioSliceMs));
-            timings = timings.Select(t => t with { PairedGeneratedOverHand = paired.GeneratedOverHand(kernels.First(k => k.MacroName == t.Kernel)) }).ToArray();
+            log.WriteLine($"report: timing generated against hand in pairs, in {RatioProcesses} processes per kernel");
+            var processes = new ProcessRatioTimer(RatioProcesses);
+            timings = timings.Select(t =>
+            {
+                var (median, min, max) = processes.GeneratedOverHand(t.Kernel);
+                return t with { PairedGeneratedOverHand = median, PairedRange = (min, max) };
+            }).ToArray();
         }
 
         var rows = kernels.Zip(timings, (k, t) =>
@@ -138,7 +145,8 @@ public static class ReportCommand
 
         var command = "dotnet run -c Release --project bench/GMac.Benchmarks -- report" + (options.Quick ? " --quick" : "");
         var mode = options.Quick ? "quick: Stopwatch, best of 3 rounds of 20 ms" : "full: BenchmarkDotNet in process, 4 warm-ups, 10 iterations of 200 ms, median; " +
-            $"generated / hand timed in {PairedRatioPairs} back-to-back pairs of {PairedRatioSliceMs} ms slices, median of the pairs' ratios";
+            $"generated / hand: in each of {RatioProcesses} fresh processes per kernel (every other one compiling the hand code first), both run until the JIT has its final code, " +
+            $"then {KernelsCommand.RatioPairs} back-to-back pairs of {KernelsCommand.SliceMs} ms slices and the median of the pairs' ratios; the median over the processes, their range in brackets";
         var markdown = MarkdownReport.Render(rows, generation, mode, command, ChartFile,
             accuracy, AccuracyTable.Section(accuracy, accuracyItems, GaApplicationBenchmarks.Seed), vectorSection);
         var png = BarChart.Render(timings);

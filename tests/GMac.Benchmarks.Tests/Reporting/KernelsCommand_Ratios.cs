@@ -1,0 +1,35 @@
+using System.Globalization;
+using GMac.Benchmarks.Reporting;
+
+namespace GMac.Benchmarks.Tests.Reporting;
+
+public class KernelsCommand_Ratios
+{
+    [Fact]
+    public void Ratio_mode_prints_one_parsable_line_per_kernel_whichever_variant_comes_first()
+    {
+        foreach (var handFirst in new[] { false, true })
+        {
+            var output = new StringWriter();
+            string[] args = handFirst ? ["--ratio", "--hand-first", "Circ3"] : ["--ratio", "Circ3"];
+            Assert.Equal(0, KernelsCommand.Run(args, output, new StringWriter()));
+            var fields = Assert.Single(output.ToString().Split('\n', StringSplitOptions.RemoveEmptyEntries)).Split(' ');
+            Assert.Equal([KernelsCommand.RatioLine, "Circ3"], fields[..2]);
+            var (ratio, generatedNs, handNs) = (Parse(fields[2]), Parse(fields[3]), Parse(fields[4]));
+            Assert.True(generatedNs > 0 && handNs > 0, output.ToString());
+            // The same arithmetic: whatever the JIT's placement, the ratio stays near one.
+            Assert.InRange(ratio, 0.33, 3.0);
+        }
+    }
+
+    [Fact]
+    public void Unknown_kernels_and_options_are_refused_with_the_usage()
+    {
+        var error = new StringWriter();
+        Assert.Equal(2, KernelsCommand.Run(["--ratio", "NoSuchKernel"], new StringWriter(), error));
+        Assert.Contains("usage: GMac.Benchmarks kernels [--ratio [--hand-first]] NAME...", error.ToString());
+        Assert.Equal(2, KernelsCommand.Run(["--fast", "Circ3"], new StringWriter(), new StringWriter()));
+    }
+
+    private static double Parse(string s) => double.Parse(s, CultureInfo.InvariantCulture);
+}
