@@ -149,7 +149,9 @@ internal static class BindingPointGenerator
                 : SourceSpan.At(file.Path, point.RegionLineNumber, point.RegionColumn);
             diagnostics.Add(new(p.Descriptor, at, p.Message));
         }
-        return code is null ? new GeneratedRegion(point, outcome, null) : new GeneratedRegion(point, outcome, code) { ScalarType = scalarType, FusedMultiplyAdd = fma };
+        if (code is null) return new GeneratedRegion(point, outcome, null);
+        if (VectorType.Find(scalarType) is { } vector && !file.ImportedNamespaces.Contains(vector.Namespace)) code = VectorTypeNames.Qualify(code, scalarType);
+        return new GeneratedRegion(point, outcome, code) { ScalarType = scalarType, FusedMultiplyAdd = fma };
     }
 
     /// <summary>A binding point gives each of Type, Fma and Batch once: every later line of the kind is an error at that line.</summary>

@@ -116,8 +116,19 @@ internal static partial class BindingPointReader
         }).ToList();
         var bindNames = points.SelectMany(p => p.Bindings).SelectMany(b => BoundIdentifiers(b.Spec)).ToHashSet(StringComparer.Ordinal);
         diagnostics.Sort((a, b) => (a.Span.Line, a.Span.Column).CompareTo((b.Span.Line, b.Span.Column)));
-        return new BindingPointFile(source, lines, points, diagnostics, bindNames);
+        return new BindingPointFile(source, lines, points, diagnostics, bindNames, ImportedNamespaces(root));
     }
+
+    /// <summary>
+    /// The namespaces of the file's plain <c>using</c> directives (not aliases or <c>using static</c>),
+    /// at any level: one inside a namespace block counts for the whole file, a rare overestimate.
+    /// </summary>
+    private static HashSet<string> ImportedNamespaces(SyntaxNode root) =>
+        root.DescendantNodes(n => n is CompilationUnitSyntax or BaseNamespaceDeclarationSyntax)
+            .OfType<UsingDirectiveSyntax>()
+            .Where(u => u.Alias is null && u.StaticKeyword.IsKind(SyntaxKind.None) && u.NamespaceOrType is not null)
+            .Select(u => u.NamespaceOrType.ToString().Replace(" ", "", StringComparison.Ordinal).Replace("global::", "", StringComparison.Ordinal))
+            .ToHashSet(StringComparer.Ordinal);
 
     /// <summary>Every identifier in the C# text of a binding (templates included): names the generated code reads or writes.</summary>
     private static IEnumerable<string> BoundIdentifiers(BindingSpec spec)

@@ -179,7 +179,7 @@ internal static class SourceGeneration
         }
         var file = BindingPointReader.MayContainBindingPoints(source.Text)
             ? BindingPointReader.Read(source)
-            : new BindingPointFile(source, [], [], [], new HashSet<string>());
+            : new BindingPointFile(source, [], [], [], new HashSet<string>(), new HashSet<string>());
         return BindingPointGenerator.Generate(file, context, stats);
     }
 

@@ -154,7 +154,7 @@ internal static class CSharpBatchEmitter
             Line(indent, "{");
             foreach (var load in loads) Line(inner, load);
             code.Append(body);
-            foreach (var (key, collection) in outputs) Line(inner, $"{vectorTargets[key]}.StoreUnsafe(ref {references[collection]}, (nuint){index});");
+            foreach (var (key, collection) in outputs) Line(inner, $"{family}.StoreUnsafe({vectorTargets[key]}, ref {references[collection]}, (nuint){index});");
             Line(indent, "}");
             Line(indent, $"for (; {index} < {count}; {index}++)");
         }

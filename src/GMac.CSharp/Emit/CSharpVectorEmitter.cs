@@ -94,12 +94,13 @@ public sealed class CSharpVectorEmitter : CSharpBlockEmitter
                 return new VariableExpr(LaneMarker + VectorArcCosine.Emit(type.Family, Named(node.Children[0]),
                     v => Constant(new ConstantExpr(v)), () => freshName("L"), _before));
             var single = type.IsSingle;
-            // Constant arguments stay scalar literals; the rest are read lane by lane.
+            // Constant arguments stay scalar literals; the rest are read lane by lane. Extension methods are
+            // called as static methods, which compile where the file lacks the vector types' using (VectorTypeNames).
             var arguments = node.Children.Select(a => a is ConstantExpr c ? (Literal: ScalarLiteral(c, single), Vector: (string?)null) : (Literal: (string?)null, Vector: Named(a))).ToList();
             var function = ScalarFunction(node is PowerExpr ? "pow" : ((CallExpr)node).Function, single);
             var exponent = node is PowerExpr p ? ", " + ScalarLiteral(new ConstantExpr(p.Exponent), single) : "";
             string Lane(string index) =>
-                $"{function}({string.Join(", ", arguments.Select(a => a.Literal ?? (type.HasFixedWidth ? $"{a.Vector}.GetElement({index})" : $"{a.Vector}[{index}]")))}{exponent})";
+                $"{function}({string.Join(", ", arguments.Select(a => a.Literal ?? (type.HasFixedWidth ? $"{type.Family}.GetElement({a.Vector}, {index})" : $"{a.Vector}[{index}]")))}{exponent})";
             var result = freshName("L");
             if (type.HasFixedWidth)
             {
@@ -110,7 +111,7 @@ public sealed class CSharpVectorEmitter : CSharpBlockEmitter
                 // Vector<T> has as many lanes as the machine gives it: a loop over them.
                 var i = freshName("I");
                 _before.Add($"var {result} = {type.Name}.Zero;");
-                _before.Add($"for (var {i} = 0; {i} < {type.Name}.Count; {i}++) {result} = {result}.WithElement({i}, {Lane(i)});");
+                _before.Add($"for (var {i} = 0; {i} < {type.Name}.Count; {i}++) {result} = {type.Family}.WithElement({result}, {i}, {Lane(i)});");
             }
             return new VariableExpr(LaneMarker + result);
         }

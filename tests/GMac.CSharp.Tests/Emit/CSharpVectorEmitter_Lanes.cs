@@ -68,7 +68,7 @@ public sealed partial class CSharpVectorEmitter_Lanes
         var code = CSharpEmitter.Emit(Block(Call("atan2", Sum(A, B), A)), new CSharpEmitOptions { ScalarType = "Vector128<double>" });
         Assert.Equal(
             "var tmpL0 = a + b;\n" +
-            "var tmpL1 = Vector128.Create(Math.Atan2(tmpL0.GetElement(0), a.GetElement(0)), Math.Atan2(tmpL0.GetElement(1), a.GetElement(1)));\n" +
+            "var tmpL1 = Vector128.Create(Math.Atan2(Vector128.GetElement(tmpL0, 0), Vector128.GetElement(a, 0)), Math.Atan2(Vector128.GetElement(tmpL0, 1), Vector128.GetElement(a, 1)));\n" +
             "o0Target = tmpL1;\n", code);
     }
 

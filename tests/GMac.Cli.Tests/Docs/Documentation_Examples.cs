@@ -52,7 +52,7 @@ public sealed partial class Documentation_Examples
     private static (int Points, string Failures) CheckBindingPoints(MarkdownCodeBlock block, IReadOnlyList<MarkdownCodeBlock> blocks)
     {
         var failures = new StringBuilder();
-        var file = BindingPointReader.Read(SourceText.FromString(block.Where, block.Text));
+        var file = BindingPointReader.Read(SourceText.FromString(block.Where, WithUsingsOfItsFile(block, blocks)));
         var generation = BindingPointGenerator.Generate(file, ContextFor(block, file, blocks), includeStatistics: true);
         if (!generation.Succeeded)
         {
@@ -70,6 +70,21 @@ public sealed partial class Documentation_Examples
                     .Append(") differs from what gmac generate writes:\n--- shown\n").Append(body).Append("--- generated\n").Append(WithoutStatistics(code));
         }
         return (file.Points.Count, failures.ToString());
+    }
+
+    /// <summary>
+    /// A block that shows a region alone ("after gmac generate") stands for that region in the file of
+    /// the C# block before it: it is read with that block's <c>using</c> lines, on one line before its
+    /// first (the vector code names its types short only where the file imports them).
+    /// </summary>
+    private static string WithUsingsOfItsFile(MarkdownCodeBlock block, IReadOnlyList<MarkdownCodeBlock> blocks)
+    {
+        if (!block.Text.TrimStart().StartsWith("#region GMac", StringComparison.Ordinal)) return block.Text;
+        var file = blocks.LastOrDefault(b => b.File == block.File && b.Line < block.Line && b.Language is "csharp" or "cs" or "c#"
+            && !b.Text.TrimStart().StartsWith("#region GMac", StringComparison.Ordinal));
+        if (file is null) return block.Text;
+        var usings = file.Text.Split('\n').Select(l => l.Trim()).Where(l => l.StartsWith("using ", StringComparison.Ordinal) && l.EndsWith(';'));
+        return string.Join(" ", usings) + "\n" + block.Text;
     }
 
     [Fact]

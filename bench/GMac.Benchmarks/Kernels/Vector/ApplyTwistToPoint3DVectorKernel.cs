@@ -68,9 +68,9 @@ public sealed class ApplyTwistToPoint3DVectorKernel() : VectorKernel(new ApplyTw
             var tmp12 = tmp2 * tmp5;
             var result1 = tmp4 * (tmp7 - item1 * tmp11) - (tmp8 * (item0 * tmp10 + item2 * tmp12) - item1 * item7 - item9);
             var result2 = tmp8 * (item1 * tmp12 + item0 * tmp9) + item10 + item2 * item7 + tmp4 * (tmp6 - item2 * tmp11);
-            result0.StoreUnsafe(ref span11, (nuint)k);
-            result1.StoreUnsafe(ref span12, (nuint)k);
-            result2.StoreUnsafe(ref span13, (nuint)k);
+            Vector256.StoreUnsafe(result0, ref span11, (nuint)k);
+            Vector256.StoreUnsafe(result1, ref span12, (nuint)k);
+            Vector256.StoreUnsafe(result2, ref span13, (nuint)k);
         }
         for (; k < count0; k++)
         {
@@ -156,9 +156,9 @@ public sealed class ApplyTwistToPoint3DVectorKernel() : VectorKernel(new ApplyTw
             var tmp12 = tmp2 * tmp5;
             var result1 = tmp4 * (tmp7 - item1 * tmp11) - (tmp8 * (item0 * tmp10 + item2 * tmp12) - item1 * item7 - item9);
             var result2 = tmp8 * (item1 * tmp12 + item0 * tmp9) + item10 + item2 * item7 + tmp4 * (tmp6 - item2 * tmp11);
-            result0.StoreUnsafe(ref span11, (nuint)k);
-            result1.StoreUnsafe(ref span12, (nuint)k);
-            result2.StoreUnsafe(ref span13, (nuint)k);
+            Vector512.StoreUnsafe(result0, ref span11, (nuint)k);
+            Vector512.StoreUnsafe(result1, ref span12, (nuint)k);
+            Vector512.StoreUnsafe(result2, ref span13, (nuint)k);
         }
         for (; k < count0; k++)
         {

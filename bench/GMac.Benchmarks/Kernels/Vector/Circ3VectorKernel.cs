@@ -37,9 +37,9 @@ public sealed class Circ3VectorKernel() : VectorKernel(new Circ3Kernel())
             var result0 = item0 * tmp0;
             var result1 = item1 * tmp0;
             var result2 = tmpC2 * item2;
-            result0.StoreUnsafe(ref span3, (nuint)k);
-            result1.StoreUnsafe(ref span4, (nuint)k);
-            result2.StoreUnsafe(ref span5, (nuint)k);
+            Vector256.StoreUnsafe(result0, ref span3, (nuint)k);
+            Vector256.StoreUnsafe(result1, ref span4, (nuint)k);
+            Vector256.StoreUnsafe(result2, ref span5, (nuint)k);
         }
         for (; k < count0; k++)
         {
@@ -83,9 +83,9 @@ public sealed class Circ3VectorKernel() : VectorKernel(new Circ3Kernel())
             var result0 = item0 * tmp0;
             var result1 = item1 * tmp0;
             var result2 = tmpC2 * item2;
-            result0.StoreUnsafe(ref span3, (nuint)k);
-            result1.StoreUnsafe(ref span4, (nuint)k);
-            result2.StoreUnsafe(ref span5, (nuint)k);
+            Vector512.StoreUnsafe(result0, ref span3, (nuint)k);
+            Vector512.StoreUnsafe(result1, ref span4, (nuint)k);
+            Vector512.StoreUnsafe(result2, ref span5, (nuint)k);
         }
         for (; k < count0; k++)
         {

@@ -71,15 +71,15 @@ public sealed class GramSchmidtRejectionVectorKernel() : VectorKernel(new GramSc
             var result6 = tmp6 * tmp7;
             var result7 = tmp5 * tmp7;
             var result8 = tmp3 * tmp7;
-            result0.StoreUnsafe(ref span9, (nuint)k);
-            result1.StoreUnsafe(ref span10, (nuint)k);
-            result2.StoreUnsafe(ref span11, (nuint)k);
-            result3.StoreUnsafe(ref span12, (nuint)k);
-            result4.StoreUnsafe(ref span13, (nuint)k);
-            result5.StoreUnsafe(ref span14, (nuint)k);
-            result6.StoreUnsafe(ref span15, (nuint)k);
-            result7.StoreUnsafe(ref span16, (nuint)k);
-            result8.StoreUnsafe(ref span17, (nuint)k);
+            Vector256.StoreUnsafe(result0, ref span9, (nuint)k);
+            Vector256.StoreUnsafe(result1, ref span10, (nuint)k);
+            Vector256.StoreUnsafe(result2, ref span11, (nuint)k);
+            Vector256.StoreUnsafe(result3, ref span12, (nuint)k);
+            Vector256.StoreUnsafe(result4, ref span13, (nuint)k);
+            Vector256.StoreUnsafe(result5, ref span14, (nuint)k);
+            Vector256.StoreUnsafe(result6, ref span15, (nuint)k);
+            Vector256.StoreUnsafe(result7, ref span16, (nuint)k);
+            Vector256.StoreUnsafe(result8, ref span17, (nuint)k);
         }
         for (; k < count0; k++)
         {
@@ -170,15 +170,15 @@ public sealed class GramSchmidtRejectionVectorKernel() : VectorKernel(new GramSc
             var result6 = tmp6 * tmp7;
             var result7 = tmp5 * tmp7;
             var result8 = tmp3 * tmp7;
-            result0.StoreUnsafe(ref span9, (nuint)k);
-            result1.StoreUnsafe(ref span10, (nuint)k);
-            result2.StoreUnsafe(ref span11, (nuint)k);
-            result3.StoreUnsafe(ref span12, (nuint)k);
-            result4.StoreUnsafe(ref span13, (nuint)k);
-            result5.StoreUnsafe(ref span14, (nuint)k);
-            result6.StoreUnsafe(ref span15, (nuint)k);
-            result7.StoreUnsafe(ref span16, (nuint)k);
-            result8.StoreUnsafe(ref span17, (nuint)k);
+            Vector512.StoreUnsafe(result0, ref span9, (nuint)k);
+            Vector512.StoreUnsafe(result1, ref span10, (nuint)k);
+            Vector512.StoreUnsafe(result2, ref span11, (nuint)k);
+            Vector512.StoreUnsafe(result3, ref span12, (nuint)k);
+            Vector512.StoreUnsafe(result4, ref span13, (nuint)k);
+            Vector512.StoreUnsafe(result5, ref span14, (nuint)k);
+            Vector512.StoreUnsafe(result6, ref span15, (nuint)k);
+            Vector512.StoreUnsafe(result7, ref span16, (nuint)k);
+            Vector512.StoreUnsafe(result8, ref span17, (nuint)k);
         }
         for (; k < count0; k++)
         {

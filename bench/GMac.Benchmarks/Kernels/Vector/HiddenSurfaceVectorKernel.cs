@@ -40,7 +40,7 @@ public sealed class HiddenSurfaceVectorKernel() : VectorKernel(new HiddenSurface
             var item4 = Vector256.LoadUnsafe(ref span4, (nuint)k);
             var item5 = Vector256.LoadUnsafe(ref span5, (nuint)k);
             var result0 = (item4 - item0) * (item3 - item1) - (item2 - item0) * (item5 - item1);
-            result0.StoreUnsafe(ref span6, (nuint)k);
+            Vector256.StoreUnsafe(result0, ref span6, (nuint)k);
         }
         for (; k < count0; k++)
         {
@@ -84,7 +84,7 @@ public sealed class HiddenSurfaceVectorKernel() : VectorKernel(new HiddenSurface
             var item4 = Vector512.LoadUnsafe(ref span4, (nuint)k);
             var item5 = Vector512.LoadUnsafe(ref span5, (nuint)k);
             var result0 = (item4 - item0) * (item3 - item1) - (item2 - item0) * (item5 - item1);
-            result0.StoreUnsafe(ref span6, (nuint)k);
+            Vector512.StoreUnsafe(result0, ref span6, (nuint)k);
         }
         for (; k < count0; k++)
         {

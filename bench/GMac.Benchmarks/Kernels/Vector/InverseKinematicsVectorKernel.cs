@@ -152,9 +152,9 @@ public sealed partial class InverseKinematicsVectorKernel() : VectorKernel(new I
             var tmp100 = tmp95 - tmpC16 * tmp92;
             var result1 = tmp89 * (tmpC16 * tmp90 + tmp99) + tmp91 * (tmp100 - tmpC11 * tmp90) + tmpC5 * (tmp93 * tmp90 - tmp94 * tmp92);
             var result2 = tmp89 * (tmpC12 * tmp89 + tmp97 + tmpC16 * tmp91) + tmp90 * (tmpC12 * tmp90 - tmp100) + tmp91 * (tmp98 - tmpC12 * tmp91) + tmp92 * (tmp96 - tmpC12 * tmp92);
-            result0.StoreUnsafe(ref span5, (nuint)k);
-            result1.StoreUnsafe(ref span6, (nuint)k);
-            result2.StoreUnsafe(ref span7, (nuint)k);
+            Vector256.StoreUnsafe(result0, ref span5, (nuint)k);
+            Vector256.StoreUnsafe(result1, ref span6, (nuint)k);
+            Vector256.StoreUnsafe(result2, ref span7, (nuint)k);
         }
         for (; k < count0; k++)
         {
@@ -408,9 +408,9 @@ public sealed partial class InverseKinematicsVectorKernel() : VectorKernel(new I
             var tmp100 = tmp95 - tmpC16 * tmp92;
             var result1 = tmp89 * (tmpC16 * tmp90 + tmp99) + tmp91 * (tmp100 - tmpC11 * tmp90) + tmpC5 * (tmp93 * tmp90 - tmp94 * tmp92);
             var result2 = tmp89 * (tmpC12 * tmp89 + tmp97 + tmpC16 * tmp91) + tmp90 * (tmpC12 * tmp90 - tmp100) + tmp91 * (tmp98 - tmpC12 * tmp91) + tmp92 * (tmp96 - tmpC12 * tmp92);
-            result0.StoreUnsafe(ref span5, (nuint)k);
-            result1.StoreUnsafe(ref span6, (nuint)k);
-            result2.StoreUnsafe(ref span7, (nuint)k);
+            Vector512.StoreUnsafe(result0, ref span5, (nuint)k);
+            Vector512.StoreUnsafe(result1, ref span6, (nuint)k);
+            Vector512.StoreUnsafe(result2, ref span7, (nuint)k);
         }
         for (; k < count0; k++)
         {

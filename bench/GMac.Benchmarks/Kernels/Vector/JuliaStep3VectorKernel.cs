@@ -39,8 +39,8 @@ public sealed class JuliaStep3VectorKernel() : VectorKernel(new JuliaStep3Kernel
             var tmp1 = item0 * item0;
             var result0 = item0 * (tmp1 - tmpC0 * tmp0) + item2;
             var result1 = item1 * (tmpC0 * tmp1 - tmp0) + item3;
-            result0.StoreUnsafe(ref span4, (nuint)k);
-            result1.StoreUnsafe(ref span5, (nuint)k);
+            Vector256.StoreUnsafe(result0, ref span4, (nuint)k);
+            Vector256.StoreUnsafe(result1, ref span5, (nuint)k);
         }
         for (; k < count0; k++)
         {
@@ -86,8 +86,8 @@ public sealed class JuliaStep3VectorKernel() : VectorKernel(new JuliaStep3Kernel
             var tmp1 = item0 * item0;
             var result0 = item0 * (tmp1 - tmpC0 * tmp0) + item2;
             var result1 = item1 * (tmpC0 * tmp1 - tmp0) + item3;
-            result0.StoreUnsafe(ref span4, (nuint)k);
-            result1.StoreUnsafe(ref span5, (nuint)k);
+            Vector512.StoreUnsafe(result0, ref span4, (nuint)k);
+            Vector512.StoreUnsafe(result1, ref span5, (nuint)k);
         }
         for (; k < count0; k++)
         {

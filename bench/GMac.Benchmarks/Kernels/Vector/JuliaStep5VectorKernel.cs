@@ -42,8 +42,8 @@ public sealed class JuliaStep5VectorKernel() : VectorKernel(new JuliaStep5Kernel
             var tmp3 = tmp0 * tmp0;
             var result0 = item0 * ((tmp2 - tmp1) * tmp2 + tmpC1 * tmp3) + item2;
             var result1 = item1 * ((tmpC1 * tmp2 - tmp1) * tmp2 + tmp3) + item3;
-            result0.StoreUnsafe(ref span4, (nuint)k);
-            result1.StoreUnsafe(ref span5, (nuint)k);
+            Vector256.StoreUnsafe(result0, ref span4, (nuint)k);
+            Vector256.StoreUnsafe(result1, ref span5, (nuint)k);
         }
         for (; k < count0; k++)
         {
@@ -94,8 +94,8 @@ public sealed class JuliaStep5VectorKernel() : VectorKernel(new JuliaStep5Kernel
             var tmp3 = tmp0 * tmp0;
             var result0 = item0 * ((tmp2 - tmp1) * tmp2 + tmpC1 * tmp3) + item2;
             var result1 = item1 * ((tmpC1 * tmp2 - tmp1) * tmp2 + tmp3) + item3;
-            result0.StoreUnsafe(ref span4, (nuint)k);
-            result1.StoreUnsafe(ref span5, (nuint)k);
+            Vector512.StoreUnsafe(result0, ref span4, (nuint)k);
+            Vector512.StoreUnsafe(result1, ref span5, (nuint)k);
         }
         for (; k < count0; k++)
         {

@@ -53,12 +53,12 @@ public sealed partial class LineThroughPointsVectorKernel() : VectorKernel(new L
             var result3 = tmp1 * item0 - tmp0 * item1;
             var result4 = tmp2 * item0 - tmp0 * item2;
             var result5 = tmp2 * item1 - tmp1 * item2;
-            result0.StoreUnsafe(ref span6, (nuint)k);
-            result1.StoreUnsafe(ref span7, (nuint)k);
-            result2.StoreUnsafe(ref span8, (nuint)k);
-            result3.StoreUnsafe(ref span9, (nuint)k);
-            result4.StoreUnsafe(ref span10, (nuint)k);
-            result5.StoreUnsafe(ref span11, (nuint)k);
+            Vector256.StoreUnsafe(result0, ref span6, (nuint)k);
+            Vector256.StoreUnsafe(result1, ref span7, (nuint)k);
+            Vector256.StoreUnsafe(result2, ref span8, (nuint)k);
+            Vector256.StoreUnsafe(result3, ref span9, (nuint)k);
+            Vector256.StoreUnsafe(result4, ref span10, (nuint)k);
+            Vector256.StoreUnsafe(result5, ref span11, (nuint)k);
         }
         for (; k < count0; k++)
         {
@@ -123,12 +123,12 @@ public sealed partial class LineThroughPointsVectorKernel() : VectorKernel(new L
             var result3 = tmp1 * item0 - tmp0 * item1;
             var result4 = tmp2 * item0 - tmp0 * item2;
             var result5 = tmp2 * item1 - tmp1 * item2;
-            result0.StoreUnsafe(ref span6, (nuint)k);
-            result1.StoreUnsafe(ref span7, (nuint)k);
-            result2.StoreUnsafe(ref span8, (nuint)k);
-            result3.StoreUnsafe(ref span9, (nuint)k);
-            result4.StoreUnsafe(ref span10, (nuint)k);
-            result5.StoreUnsafe(ref span11, (nuint)k);
+            Vector512.StoreUnsafe(result0, ref span6, (nuint)k);
+            Vector512.StoreUnsafe(result1, ref span7, (nuint)k);
+            Vector512.StoreUnsafe(result2, ref span8, (nuint)k);
+            Vector512.StoreUnsafe(result3, ref span9, (nuint)k);
+            Vector512.StoreUnsafe(result4, ref span10, (nuint)k);
+            Vector512.StoreUnsafe(result5, ref span11, (nuint)k);
         }
         for (; k < count0; k++)
         {

@@ -39,9 +39,9 @@ public sealed partial class NormalToVectorsVectorKernel() : VectorKernel(new Nor
             var result0 = item1 * item5 - item2 * item4;
             var result1 = item2 * item3 - item0 * item5;
             var result2 = item0 * item4 - item1 * item3;
-            result0.StoreUnsafe(ref span6, (nuint)k);
-            result1.StoreUnsafe(ref span7, (nuint)k);
-            result2.StoreUnsafe(ref span8, (nuint)k);
+            Vector256.StoreUnsafe(result0, ref span6, (nuint)k);
+            Vector256.StoreUnsafe(result1, ref span7, (nuint)k);
+            Vector256.StoreUnsafe(result2, ref span8, (nuint)k);
         }
         for (; k < count0; k++)
         {
@@ -86,9 +86,9 @@ public sealed partial class NormalToVectorsVectorKernel() : VectorKernel(new Nor
             var result0 = item1 * item5 - item2 * item4;
             var result1 = item2 * item3 - item0 * item5;
             var result2 = item0 * item4 - item1 * item3;
-            result0.StoreUnsafe(ref span6, (nuint)k);
-            result1.StoreUnsafe(ref span7, (nuint)k);
-            result2.StoreUnsafe(ref span8, (nuint)k);
+            Vector512.StoreUnsafe(result0, ref span6, (nuint)k);
+            Vector512.StoreUnsafe(result1, ref span7, (nuint)k);
+            Vector512.StoreUnsafe(result2, ref span8, (nuint)k);
         }
         for (; k < count0; k++)
         {

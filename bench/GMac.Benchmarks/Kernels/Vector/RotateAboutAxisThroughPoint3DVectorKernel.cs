@@ -64,9 +64,9 @@ public sealed partial class RotateAboutAxisThroughPoint3DVectorKernel() : Vector
             var tmp12 = tmp2 * tmp6;
             var result1 = tmp8 * (item2 * tmp12 - item0 * tmp10) + item8 - tmp4 * (tmp5 - item1 * tmp11);
             var result2 = tmp8 * (item0 * tmp9 - item1 * tmp12) + item9 - tmp4 * (tmp7 - item2 * tmp11);
-            result0.StoreUnsafe(ref span10, (nuint)k);
-            result1.StoreUnsafe(ref span11, (nuint)k);
-            result2.StoreUnsafe(ref span12, (nuint)k);
+            Vector256.StoreUnsafe(result0, ref span10, (nuint)k);
+            Vector256.StoreUnsafe(result1, ref span11, (nuint)k);
+            Vector256.StoreUnsafe(result2, ref span12, (nuint)k);
         }
         for (; k < count0; k++)
         {
@@ -148,9 +148,9 @@ public sealed partial class RotateAboutAxisThroughPoint3DVectorKernel() : Vector
             var tmp12 = tmp2 * tmp6;
             var result1 = tmp8 * (item2 * tmp12 - item0 * tmp10) + item8 - tmp4 * (tmp5 - item1 * tmp11);
             var result2 = tmp8 * (item0 * tmp9 - item1 * tmp12) + item9 - tmp4 * (tmp7 - item2 * tmp11);
-            result0.StoreUnsafe(ref span10, (nuint)k);
-            result1.StoreUnsafe(ref span11, (nuint)k);
-            result2.StoreUnsafe(ref span12, (nuint)k);
+            Vector512.StoreUnsafe(result0, ref span10, (nuint)k);
+            Vector512.StoreUnsafe(result1, ref span11, (nuint)k);
+            Vector512.StoreUnsafe(result2, ref span12, (nuint)k);
         }
         for (; k < count0; k++)
         {

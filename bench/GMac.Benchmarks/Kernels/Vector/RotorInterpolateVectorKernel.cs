@@ -93,10 +93,10 @@ public sealed class RotorInterpolateVectorKernel() : VectorKernel(new RotorInter
             var result1 = item1 * tmp7 + item5 * tmp5;
             var result2 = item2 * tmp7 + item6 * tmp5;
             var result3 = item3 * tmp7 + item7 * tmp5;
-            result0.StoreUnsafe(ref span9, (nuint)k);
-            result1.StoreUnsafe(ref span10, (nuint)k);
-            result2.StoreUnsafe(ref span11, (nuint)k);
-            result3.StoreUnsafe(ref span12, (nuint)k);
+            Vector256.StoreUnsafe(result0, ref span9, (nuint)k);
+            Vector256.StoreUnsafe(result1, ref span10, (nuint)k);
+            Vector256.StoreUnsafe(result2, ref span11, (nuint)k);
+            Vector256.StoreUnsafe(result3, ref span12, (nuint)k);
         }
         for (; k < count0; k++)
         {
@@ -203,10 +203,10 @@ public sealed class RotorInterpolateVectorKernel() : VectorKernel(new RotorInter
             var result1 = item1 * tmp7 + item5 * tmp5;
             var result2 = item2 * tmp7 + item6 * tmp5;
             var result3 = item3 * tmp7 + item7 * tmp5;
-            result0.StoreUnsafe(ref span9, (nuint)k);
-            result1.StoreUnsafe(ref span10, (nuint)k);
-            result2.StoreUnsafe(ref span11, (nuint)k);
-            result3.StoreUnsafe(ref span12, (nuint)k);
+            Vector512.StoreUnsafe(result0, ref span9, (nuint)k);
+            Vector512.StoreUnsafe(result1, ref span10, (nuint)k);
+            Vector512.StoreUnsafe(result2, ref span11, (nuint)k);
+            Vector512.StoreUnsafe(result3, ref span12, (nuint)k);
         }
         for (; k < count0; k++)
         {

@@ -65,15 +65,15 @@ public sealed class RotorToMatrixVectorKernel() : VectorKernel(new RotorToMatrix
             var result6 = tmp7 - tmp8;
             var result7 = tmp11 + tmp10;
             var result8 = tmpC0 - tmp9 - tmp4;
-            result0.StoreUnsafe(ref span4, (nuint)k);
-            result1.StoreUnsafe(ref span5, (nuint)k);
-            result2.StoreUnsafe(ref span6, (nuint)k);
-            result3.StoreUnsafe(ref span7, (nuint)k);
-            result4.StoreUnsafe(ref span8, (nuint)k);
-            result5.StoreUnsafe(ref span9, (nuint)k);
-            result6.StoreUnsafe(ref span10, (nuint)k);
-            result7.StoreUnsafe(ref span11, (nuint)k);
-            result8.StoreUnsafe(ref span12, (nuint)k);
+            Vector256.StoreUnsafe(result0, ref span4, (nuint)k);
+            Vector256.StoreUnsafe(result1, ref span5, (nuint)k);
+            Vector256.StoreUnsafe(result2, ref span6, (nuint)k);
+            Vector256.StoreUnsafe(result3, ref span7, (nuint)k);
+            Vector256.StoreUnsafe(result4, ref span8, (nuint)k);
+            Vector256.StoreUnsafe(result5, ref span9, (nuint)k);
+            Vector256.StoreUnsafe(result6, ref span10, (nuint)k);
+            Vector256.StoreUnsafe(result7, ref span11, (nuint)k);
+            Vector256.StoreUnsafe(result8, ref span12, (nuint)k);
         }
         for (; k < count0; k++)
         {
@@ -162,15 +162,15 @@ public sealed class RotorToMatrixVectorKernel() : VectorKernel(new RotorToMatrix
             var result6 = tmp7 - tmp8;
             var result7 = tmp11 + tmp10;
             var result8 = tmpC0 - tmp9 - tmp4;
-            result0.StoreUnsafe(ref span4, (nuint)k);
-            result1.StoreUnsafe(ref span5, (nuint)k);
-            result2.StoreUnsafe(ref span6, (nuint)k);
-            result3.StoreUnsafe(ref span7, (nuint)k);
-            result4.StoreUnsafe(ref span8, (nuint)k);
-            result5.StoreUnsafe(ref span9, (nuint)k);
-            result6.StoreUnsafe(ref span10, (nuint)k);
-            result7.StoreUnsafe(ref span11, (nuint)k);
-            result8.StoreUnsafe(ref span12, (nuint)k);
+            Vector512.StoreUnsafe(result0, ref span4, (nuint)k);
+            Vector512.StoreUnsafe(result1, ref span5, (nuint)k);
+            Vector512.StoreUnsafe(result2, ref span6, (nuint)k);
+            Vector512.StoreUnsafe(result3, ref span7, (nuint)k);
+            Vector512.StoreUnsafe(result4, ref span8, (nuint)k);
+            Vector512.StoreUnsafe(result5, ref span9, (nuint)k);
+            Vector512.StoreUnsafe(result6, ref span10, (nuint)k);
+            Vector512.StoreUnsafe(result7, ref span11, (nuint)k);
+            Vector512.StoreUnsafe(result8, ref span12, (nuint)k);
         }
         for (; k < count0; k++)
         {

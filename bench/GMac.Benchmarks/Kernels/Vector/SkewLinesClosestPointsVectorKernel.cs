@@ -66,8 +66,8 @@ public sealed class SkewLinesClosestPointsVectorKernel() : VectorKernel(new Skew
             var tmp9 = tmp5 * tmp1 + tmp0 * tmp4;
             var result0 = tmp6 * (item10 * tmp7 + item11 * tmp9 - item9 * tmp8);
             var result1 = tmp6 * (item4 * tmp7 + item5 * tmp9 - item3 * tmp8);
-            result0.StoreUnsafe(ref span12, (nuint)k);
-            result1.StoreUnsafe(ref span13, (nuint)k);
+            Vector256.StoreUnsafe(result0, ref span12, (nuint)k);
+            Vector256.StoreUnsafe(result1, ref span13, (nuint)k);
         }
         for (; k < count0; k++)
         {
@@ -148,8 +148,8 @@ public sealed class SkewLinesClosestPointsVectorKernel() : VectorKernel(new Skew
             var tmp9 = tmp5 * tmp1 + tmp0 * tmp4;
             var result0 = tmp6 * (item10 * tmp7 + item11 * tmp9 - item9 * tmp8);
             var result1 = tmp6 * (item4 * tmp7 + item5 * tmp9 - item3 * tmp8);
-            result0.StoreUnsafe(ref span12, (nuint)k);
-            result1.StoreUnsafe(ref span13, (nuint)k);
+            Vector512.StoreUnsafe(result0, ref span12, (nuint)k);
+            Vector512.StoreUnsafe(result1, ref span13, (nuint)k);
         }
         for (; k < count0; k++)
         {

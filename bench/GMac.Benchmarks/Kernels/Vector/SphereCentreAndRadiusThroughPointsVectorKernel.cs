@@ -71,7 +71,7 @@ public sealed class SphereCentreAndRadiusThroughPointsVectorKernel() : VectorKer
             var tmp17 = (tmp12 * (tmp5 * tmp6 - tmp3 * tmp8) + tmp13 * (tmp0 * tmp8 - tmp2 * tmp6) - tmp10 * tmp14) * tmp15;
             var tmp18 = (tmp12 * (tmp3 * tmp7 - tmp4 * tmp6) + tmp13 * (tmp1 * tmp6 - tmp0 * tmp7) + tmp14 * tmp9) * tmp15;
             var result0 = Vector256.Sqrt(tmp16 * tmp16 + tmp17 * tmp17 + tmp18 * tmp18);
-            result0.StoreUnsafe(ref span12, (nuint)k);
+            Vector256.StoreUnsafe(result0, ref span12, (nuint)k);
         }
         for (; k < count0; k++)
         {
@@ -165,7 +165,7 @@ public sealed class SphereCentreAndRadiusThroughPointsVectorKernel() : VectorKer
             var tmp17 = (tmp12 * (tmp5 * tmp6 - tmp3 * tmp8) + tmp13 * (tmp0 * tmp8 - tmp2 * tmp6) - tmp10 * tmp14) * tmp15;
             var tmp18 = (tmp12 * (tmp3 * tmp7 - tmp4 * tmp6) + tmp13 * (tmp1 * tmp6 - tmp0 * tmp7) + tmp14 * tmp9) * tmp15;
             var result0 = Vector512.Sqrt(tmp16 * tmp16 + tmp17 * tmp17 + tmp18 * tmp18);
-            result0.StoreUnsafe(ref span12, (nuint)k);
+            Vector512.StoreUnsafe(result0, ref span12, (nuint)k);
         }
         for (; k < count0; k++)
         {

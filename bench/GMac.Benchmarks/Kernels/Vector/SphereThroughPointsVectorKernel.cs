@@ -90,11 +90,11 @@ public sealed partial class SphereThroughPointsVectorKernel() : VectorKernel(new
             var result2 = tmp20;
             var result3 = -tmp19;
             var result4 = tmp20 * item1 - tmpC0 * tmp18 * (item0 * item0 + item1 * item1 + item2 * item2) - tmp19 * item2 - tmp21 * item0;
-            result0.StoreUnsafe(ref span12, (nuint)k);
-            result1.StoreUnsafe(ref span13, (nuint)k);
-            result2.StoreUnsafe(ref span14, (nuint)k);
-            result3.StoreUnsafe(ref span15, (nuint)k);
-            result4.StoreUnsafe(ref span16, (nuint)k);
+            Vector256.StoreUnsafe(result0, ref span12, (nuint)k);
+            Vector256.StoreUnsafe(result1, ref span13, (nuint)k);
+            Vector256.StoreUnsafe(result2, ref span14, (nuint)k);
+            Vector256.StoreUnsafe(result3, ref span15, (nuint)k);
+            Vector256.StoreUnsafe(result4, ref span16, (nuint)k);
         }
         for (; k < count0; k++)
         {
@@ -214,11 +214,11 @@ public sealed partial class SphereThroughPointsVectorKernel() : VectorKernel(new
             var result2 = tmp20;
             var result3 = -tmp19;
             var result4 = tmp20 * item1 - tmpC0 * tmp18 * (item0 * item0 + item1 * item1 + item2 * item2) - tmp19 * item2 - tmp21 * item0;
-            result0.StoreUnsafe(ref span12, (nuint)k);
-            result1.StoreUnsafe(ref span13, (nuint)k);
-            result2.StoreUnsafe(ref span14, (nuint)k);
-            result3.StoreUnsafe(ref span15, (nuint)k);
-            result4.StoreUnsafe(ref span16, (nuint)k);
+            Vector512.StoreUnsafe(result0, ref span12, (nuint)k);
+            Vector512.StoreUnsafe(result1, ref span13, (nuint)k);
+            Vector512.StoreUnsafe(result2, ref span14, (nuint)k);
+            Vector512.StoreUnsafe(result3, ref span15, (nuint)k);
+            Vector512.StoreUnsafe(result4, ref span16, (nuint)k);
         }
         for (; k < count0; k++)
         {

@@ -38,7 +38,7 @@ public sealed partial class SquaredDistanceVectorKernel() : VectorKernel(new Squ
             var tmp1 = item4 - item1;
             var tmp2 = item5 - item2;
             var result0 = tmp0 * tmp0 + tmp1 * tmp1 + tmp2 * tmp2;
-            result0.StoreUnsafe(ref span6, (nuint)k);
+            Vector256.StoreUnsafe(result0, ref span6, (nuint)k);
         }
         for (; k < count0; k++)
         {
@@ -83,7 +83,7 @@ public sealed partial class SquaredDistanceVectorKernel() : VectorKernel(new Squ
             var tmp1 = item4 - item1;
             var tmp2 = item5 - item2;
             var result0 = tmp0 * tmp0 + tmp1 * tmp1 + tmp2 * tmp2;
-            result0.StoreUnsafe(ref span6, (nuint)k);
+            Vector512.StoreUnsafe(result0, ref span6, (nuint)k);
         }
         for (; k < count0; k++)
         {

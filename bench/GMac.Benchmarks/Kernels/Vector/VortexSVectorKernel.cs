@@ -48,9 +48,9 @@ public sealed class VortexSVectorKernel() : VectorKernel(new VortexSKernel())
             var result0 = item3 * tmp0 + item7 * (item2 * item4 - item1 * item5);
             var result1 = item4 * tmp0 + item7 * (item0 * item5 - item2 * item3);
             var result2 = item5 * tmp0 + item7 * (item1 * item3 - item0 * item4);
-            result0.StoreUnsafe(ref span8, (nuint)k);
-            result1.StoreUnsafe(ref span9, (nuint)k);
-            result2.StoreUnsafe(ref span10, (nuint)k);
+            Vector256.StoreUnsafe(result0, ref span8, (nuint)k);
+            Vector256.StoreUnsafe(result1, ref span9, (nuint)k);
+            Vector256.StoreUnsafe(result2, ref span10, (nuint)k);
         }
         for (; k < count0; k++)
         {
@@ -105,9 +105,9 @@ public sealed class VortexSVectorKernel() : VectorKernel(new VortexSKernel())
             var result0 = item3 * tmp0 + item7 * (item2 * item4 - item1 * item5);
             var result1 = item4 * tmp0 + item7 * (item0 * item5 - item2 * item3);
             var result2 = item5 * tmp0 + item7 * (item1 * item3 - item0 * item4);
-            result0.StoreUnsafe(ref span8, (nuint)k);
-            result1.StoreUnsafe(ref span9, (nuint)k);
-            result2.StoreUnsafe(ref span10, (nuint)k);
+            Vector512.StoreUnsafe(result0, ref span8, (nuint)k);
+            Vector512.StoreUnsafe(result1, ref span9, (nuint)k);
+            Vector512.StoreUnsafe(result2, ref span10, (nuint)k);
         }
         for (; k < count0; k++)
         {
