@@ -22,17 +22,22 @@ public sealed class ProcessRatioTimer(int processes)
         return (median, ratios[0], ratios[^1]);
     }
 
+    /// <summary>The dotnet host: the one running this process where that is it (dotnet run, dotnet test), else the one on the path.</summary>
+    private static string DotnetHost() =>
+        Environment.GetEnvironmentVariable("DOTNET_HOST_PATH") is { Length: > 0 } host ? host
+        : Path.GetFileNameWithoutExtension(Environment.ProcessPath) == "dotnet" ? Environment.ProcessPath!
+        : "dotnet";
+
     private static double RunOnce(string kernel, bool handFirst)
     {
-        var start = new ProcessStartInfo(Environment.ProcessPath ?? throw new InvalidOperationException("cannot tell which program is running"))
+        var start = new ProcessStartInfo(DotnetHost())
         {
             RedirectStandardOutput = true,
             RedirectStandardError = true,
             UseShellExecute = false,
             WorkingDirectory = Directory.GetCurrentDirectory(),
         };
-        // Started as 'dotnet GMac.Benchmarks.dll …' the host needs the assembly; started as the app, not.
-        if (Path.GetFileNameWithoutExtension(start.FileName) == "dotnet") start.ArgumentList.Add(typeof(ProcessRatioTimer).Assembly.Location);
+        start.ArgumentList.Add(typeof(ProcessRatioTimer).Assembly.Location);
         foreach (var a in (string[])["kernels", "--ratio", .. handFirst ? ["--hand-first"] : Array.Empty<string>(), kernel]) start.ArgumentList.Add(a);
         using var process = Process.Start(start) ?? throw new InvalidOperationException($"cannot start {start.FileName}");
         var stderr = process.StandardError.ReadToEndAsync();
