@@ -96,18 +96,18 @@ public static class GeometryKernels
         double tmp0 = axis.z * axis.z + axis.y * axis.y + axis.x * axis.x;
         double tmp1 = 1.0 / tmp0;
         double tmp2 = Math.Sqrt(tmp1);
-        var (tmp8, tmp3) = Math.SinCos(angle);
-        double tmp4 = 1.0 - tmp3;
-        double tmp5 = point.y - through.y;
-        double tmp6 = point.x - through.x;
-        double tmp7 = point.z - through.z;
-        double tmp9 = tmp2 * tmp5;
-        double tmp10 = tmp2 * tmp7;
-        double tmp11 = (tmp7 * axis.z + axis.x * tmp6 + axis.y * tmp5) * tmp1;
-        result.x = tmp8 * (axis.y * tmp10 - axis.z * tmp9) + point.x - tmp4 * (tmp6 - axis.x * tmp11);
-        double tmp12 = tmp2 * tmp6;
-        result.y = tmp8 * (axis.z * tmp12 - axis.x * tmp10) + point.y - tmp4 * (tmp5 - axis.y * tmp11);
-        result.z = tmp8 * (axis.x * tmp9 - axis.y * tmp12) + point.z - tmp4 * (tmp7 - axis.z * tmp11);
+        var (tmp4, tmp3) = Math.SinCos(angle);
+        double tmp5 = 1.0 - tmp3;
+        double tmp6 = point.y - through.y;
+        double tmp7 = point.x - through.x;
+        double tmp8 = point.z - through.z;
+        double tmp9 = tmp2 * tmp6;
+        double tmp10 = tmp2 * tmp8;
+        double tmp11 = (tmp8 * axis.z + axis.x * tmp7 + axis.y * tmp6) * tmp1;
+        result.x = tmp4 * (axis.y * tmp10 - axis.z * tmp9) + point.x - tmp5 * (tmp7 - axis.x * tmp11);
+        double tmp12 = tmp2 * tmp7;
+        result.y = tmp4 * (axis.z * tmp12 - axis.x * tmp10) + point.y - tmp5 * (tmp6 - axis.y * tmp11);
+        result.z = tmp4 * (axis.x * tmp9 - axis.y * tmp12) + point.z - tmp5 * (tmp8 - axis.z * tmp11);
         #endregion
 
         return result;

@@ -64,17 +64,17 @@ public sealed class FullTwist : Twist
         //GMac.Bind("slide.1", slide);
         //GMac.Bind("x", "Vector3D", p);
         //GMac.Bind("y", "Vector3D", y);
-        double tmp0 = origin.z - p.z;
-        double tmp1 = origin.y - p.y;
-        double tmp2 = tmp1 * unit.z - tmp0 * unit.y;
-        double tmp3 = origin.x - p.x;
-        double tmp4 = tmp0 * unit.x - tmp3 * unit.z;
-        double tmp5 = tmp3 * unit.y - tmp1 * unit.x;
-        var (tmp8, tmp6) = Math.SinCos(angle);
-        double tmp7 = tmp6 - 1.0;
-        y.x = tmp2 * tmp8 + axis.x * slide + p.x + tmp7 * (tmp4 * unit.z - tmp5 * unit.y);
-        y.y = tmp4 * tmp8 + axis.y * slide + p.y + tmp7 * (tmp5 * unit.x - tmp2 * unit.z);
-        y.z = tmp5 * tmp8 + slide * axis.z + p.z + tmp7 * (tmp2 * unit.y - tmp4 * unit.x);
+        var (tmp1, tmp0) = Math.SinCos(angle);
+        double tmp2 = origin.z - p.z;
+        double tmp3 = origin.y - p.y;
+        double tmp4 = tmp3 * unit.z - tmp2 * unit.y;
+        double tmp5 = origin.x - p.x;
+        double tmp6 = tmp2 * unit.x - tmp5 * unit.z;
+        double tmp7 = tmp5 * unit.y - tmp3 * unit.x;
+        double tmp8 = tmp0 - 1.0;
+        y.x = tmp4 * tmp1 + axis.x * slide + p.x + tmp8 * (tmp6 * unit.z - tmp7 * unit.y);
+        y.y = tmp6 * tmp1 + axis.y * slide + p.y + tmp8 * (tmp7 * unit.x - tmp4 * unit.z);
+        y.z = tmp7 * tmp1 + slide * axis.z + p.z + tmp8 * (tmp4 * unit.y - tmp6 * unit.x);
         #endregion
 
         return y;

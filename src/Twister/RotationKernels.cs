@@ -15,14 +15,14 @@ internal static class RotationKernels
         //GMac.Bind("angle.1", angle);
         //GMac.Bind("d", "Vector3D", d);
         //GMac.Bind("y", "Vector3D", y);
-        double tmp0 = axis.y * d.z - axis.z * d.y;
-        double tmp1 = axis.z * d.x - axis.x * d.z;
-        double tmp2 = axis.x * d.y - axis.y * d.x;
-        var (tmp5, tmp3) = Math.SinCos(angle);
-        double tmp4 = tmp3 - 1.0;
-        y.x = tmp0 * tmp5 + d.x + tmp4 * (tmp1 * axis.z - tmp2 * axis.y);
-        y.y = tmp1 * tmp5 + d.y + tmp4 * (tmp2 * axis.x - tmp0 * axis.z);
-        y.z = tmp2 * tmp5 + d.z + tmp4 * (tmp0 * axis.y - tmp1 * axis.x);
+        var (tmp1, tmp0) = Math.SinCos(angle);
+        double tmp2 = axis.y * d.z - axis.z * d.y;
+        double tmp3 = axis.z * d.x - axis.x * d.z;
+        double tmp4 = axis.x * d.y - axis.y * d.x;
+        double tmp5 = tmp0 - 1.0;
+        y.x = tmp2 * tmp1 + d.x + tmp5 * (tmp3 * axis.z - tmp4 * axis.y);
+        y.y = tmp3 * tmp1 + d.y + tmp5 * (tmp4 * axis.x - tmp2 * axis.z);
+        y.z = tmp4 * tmp1 + d.z + tmp5 * (tmp2 * axis.y - tmp3 * axis.x);
         #endregion
 
         return y;
@@ -38,13 +38,13 @@ internal static class RotationKernels
         //GMac.Bind("angle.1", angle);
         //GMac.Bind("b", "Bivector3D", b);
         //GMac.Bind("y", "Bivector3D", y);
-        var (tmp2, tmp0) = Math.SinCos(angle);
-        double tmp1 = tmp0 - 1.0;
+        var (tmp1, tmp0) = Math.SinCos(angle);
+        double tmp2 = tmp0 - 1.0;
         double tmp3 = b.xy * axis.z + b.zx * axis.y;
         double tmp4 = b.yz * axis.x + tmp3;
-        y.xy = tmp2 * (axis.x * b.zx - axis.y * b.yz) + b.xy + tmp1 * (b.xy - axis.z * tmp4);
-        y.yz = tmp2 * (axis.y * b.xy - axis.z * b.zx) + b.yz + tmp1 * (b.yz * (axis.y * axis.y + axis.z * axis.z) - axis.x * tmp3);
-        y.zx = tmp2 * (axis.z * b.yz - axis.x * b.xy) + b.zx + tmp1 * (b.zx - axis.y * tmp4);
+        y.xy = tmp1 * (axis.x * b.zx - axis.y * b.yz) + b.xy + tmp2 * (b.xy - axis.z * tmp4);
+        y.yz = tmp1 * (axis.y * b.xy - axis.z * b.zx) + b.yz + tmp2 * (b.yz * (axis.y * axis.y + axis.z * axis.z) - axis.x * tmp3);
+        y.zx = tmp1 * (axis.z * b.yz - axis.x * b.xy) + b.zx + tmp2 * (b.zx - axis.y * tmp4);
         #endregion
 
         return y;

@@ -61,17 +61,17 @@ public sealed class RotationTwist : Twist
         //GMac.Bind("angle.1", angle);
         //GMac.Bind("x", "Vector3D", p);
         //GMac.Bind("y", "Vector3D", y);
-        double tmp0 = origin.z - p.z;
-        double tmp1 = origin.y - p.y;
-        double tmp2 = tmp1 * axis.z - tmp0 * axis.y;
-        double tmp3 = origin.x - p.x;
-        double tmp4 = tmp0 * axis.x - tmp3 * axis.z;
-        double tmp5 = tmp3 * axis.y - tmp1 * axis.x;
-        var (tmp8, tmp6) = Math.SinCos(angle);
-        double tmp7 = 1.0 - tmp6;
-        y.x = tmp2 * tmp8 + p.x - tmp7 * (tmp4 * axis.z - tmp5 * axis.y);
-        y.y = tmp4 * tmp8 + p.y - tmp7 * (tmp5 * axis.x - tmp2 * axis.z);
-        y.z = tmp5 * tmp8 + p.z - tmp7 * (tmp2 * axis.y - tmp4 * axis.x);
+        var (tmp1, tmp0) = Math.SinCos(angle);
+        double tmp2 = origin.z - p.z;
+        double tmp3 = origin.y - p.y;
+        double tmp4 = tmp3 * axis.z - tmp2 * axis.y;
+        double tmp5 = origin.x - p.x;
+        double tmp6 = tmp2 * axis.x - tmp5 * axis.z;
+        double tmp7 = tmp5 * axis.y - tmp3 * axis.x;
+        double tmp8 = 1.0 - tmp0;
+        y.x = tmp4 * tmp1 + p.x - tmp8 * (tmp6 * axis.z - tmp7 * axis.y);
+        y.y = tmp6 * tmp1 + p.y - tmp8 * (tmp7 * axis.x - tmp4 * axis.z);
+        y.z = tmp7 * tmp1 + p.z - tmp8 * (tmp4 * axis.y - tmp6 * axis.x);
         #endregion
 
         return y;
@@ -93,8 +93,8 @@ public sealed class RotationTwist : Twist
         //GMac.Bind("y", "Vector3D", y);
         //GMac.Bind("axis.e2", "0");
         //GMac.Bind("axis.e3", "0");
-        y.x = p.x;
         var (tmp0, tmp1) = Math.SinCos(angle);
+        y.x = p.x;
         double tmp2 = p.z - origin.z;
         double tmp3 = p.y - origin.y;
         y.y = tmp1 * tmp3 + origin.y - tmp0 * tmp2;

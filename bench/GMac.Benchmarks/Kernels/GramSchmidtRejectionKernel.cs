@@ -56,9 +56,6 @@ public sealed class GramSchmidtRejectionKernel : GaKernel<Vec3Triple, Vec3Triple
         double tmp11 = v.B.x;
         double tmp12 = v.B.y;
         double tmp13 = v.B.z;
-        double tmp14 = v.C.x;
-        double tmp15 = v.C.y;
-        double tmp16 = v.C.z;
         double tmp0 = (tmp8 * tmp11 + tmp9 * tmp12 + tmp10 * tmp13) / (tmp10 * tmp10 + tmp8 * tmp8 + tmp9 * tmp9);
         double tmp1 = tmp12 - tmp9;
         double tmp2 = tmp11 - tmp8;
@@ -66,13 +63,13 @@ public sealed class GramSchmidtRejectionKernel : GaKernel<Vec3Triple, Vec3Triple
         double tmp4 = tmp13 - tmp10;
         double tmp5 = tmp2 * tmp10 - tmp4 * tmp8;
         double tmp6 = tmp4 * tmp9 - tmp1 * tmp10;
+        double tmp7 = (v.C.y * tmp5 + v.C.x * tmp6 + v.C.z * tmp3) / (tmp3 * tmp3 + tmp5 * tmp5 + tmp6 * tmp6);
         w.A.x = tmp8;
         w.A.y = tmp9;
         w.A.z = tmp10;
         w.B.x = tmp11 - tmp8 * tmp0;
         w.B.y = tmp12 - tmp9 * tmp0;
         w.B.z = tmp13 - tmp10 * tmp0;
-        double tmp7 = (tmp15 * tmp5 + tmp14 * tmp6 + tmp16 * tmp3) / (tmp3 * tmp3 + tmp5 * tmp5 + tmp6 * tmp6);
         w.C.x = tmp6 * tmp7;
         w.C.y = tmp5 * tmp7;
         w.C.z = tmp3 * tmp7;

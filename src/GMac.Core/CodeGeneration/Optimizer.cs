@@ -50,10 +50,11 @@ public sealed class Optimizer
         return Run(new SineCosinePairingPass(), block); // last: later passes could inline the calls again
     }
 
-    /// <summary>Passes that change no operation count and no value: signs moved into subtractions, and optionally temporaries reused.</summary>
+    /// <summary>Passes that change no operation count and no value: signs moved into subtractions, divisions and calls moved first, and optionally temporaries reused.</summary>
     public static CodeBlock Finish(CodeBlock block, bool reuseTemporaries = false)
     {
         block = P(new SignPlacementPass(), block);
+        block = P(new LongLatencyFirstPass(), block); // before reuse, which depends on the order
         return reuseTemporaries ? P(new TemporaryReusePass(), block) : block;
     }
 

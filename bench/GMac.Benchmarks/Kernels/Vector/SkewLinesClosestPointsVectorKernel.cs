@@ -54,35 +54,35 @@ public sealed class SkewLinesClosestPointsVectorKernel() : VectorKernel(new Skew
             var item9 = Vector256.LoadUnsafe(ref span9, (nuint)k);
             var item10 = Vector256.LoadUnsafe(ref span10, (nuint)k);
             var item11 = Vector256.LoadUnsafe(ref span11, (nuint)k);
-            var tmp0 = item6 - item0;
-            var tmp1 = item7 - item1;
-            var tmp2 = item8 - item2;
-            var tmp3 = item10 * item3 - item4 * item9;
-            var tmp4 = item11 * item3 - item5 * item9;
-            var tmp5 = item11 * item4 - item10 * item5;
-            var tmp6 = tmpC0 / (tmp3 * tmp3 + tmp4 * tmp4 + tmp5 * tmp5);
-            var tmp7 = tmp0 * tmp3 - tmp5 * tmp2;
-            var tmp8 = tmp2 * tmp4 + tmp1 * tmp3;
-            var tmp9 = tmp5 * tmp1 + tmp0 * tmp4;
-            var result0 = tmp6 * (item10 * tmp7 + item11 * tmp9 - item9 * tmp8);
-            var result1 = tmp6 * (item4 * tmp7 + item5 * tmp9 - item3 * tmp8);
+            var tmp0 = item10 * item3 - item4 * item9;
+            var tmp1 = item11 * item3 - item5 * item9;
+            var tmp2 = item11 * item4 - item10 * item5;
+            var tmp3 = tmpC0 / (tmp0 * tmp0 + tmp1 * tmp1 + tmp2 * tmp2);
+            var tmp4 = item6 - item0;
+            var tmp5 = item7 - item1;
+            var tmp6 = item8 - item2;
+            var tmp7 = tmp4 * tmp0 - tmp2 * tmp6;
+            var tmp8 = tmp6 * tmp1 + tmp5 * tmp0;
+            var tmp9 = tmp2 * tmp5 + tmp4 * tmp1;
+            var result0 = tmp3 * (item10 * tmp7 + item11 * tmp9 - item9 * tmp8);
+            var result1 = tmp3 * (item4 * tmp7 + item5 * tmp9 - item3 * tmp8);
             Vector256.StoreUnsafe(result0, ref span12, (nuint)k);
             Vector256.StoreUnsafe(result1, ref span13, (nuint)k);
         }
         for (; k < count0; k++)
         {
-            double tmp0 = P2.x[k] - P1.x[k];
-            double tmp1 = P2.y[k] - P1.y[k];
-            double tmp2 = P2.z[k] - P1.z[k];
-            double tmp3 = D2.y[k] * D1.x[k] - D1.y[k] * D2.x[k];
-            double tmp4 = D2.z[k] * D1.x[k] - D1.z[k] * D2.x[k];
-            double tmp5 = D2.z[k] * D1.y[k] - D2.y[k] * D1.z[k];
-            double tmp6 = 1.0 / (tmp3 * tmp3 + tmp4 * tmp4 + tmp5 * tmp5);
-            double tmp7 = tmp0 * tmp3 - tmp5 * tmp2;
-            double tmp8 = tmp2 * tmp4 + tmp1 * tmp3;
-            double tmp9 = tmp5 * tmp1 + tmp0 * tmp4;
-            T1[k] = tmp6 * (D2.y[k] * tmp7 + D2.z[k] * tmp9 - D2.x[k] * tmp8);
-            T2[k] = tmp6 * (D1.y[k] * tmp7 + D1.z[k] * tmp9 - D1.x[k] * tmp8);
+            double tmp0 = D2.y[k] * D1.x[k] - D1.y[k] * D2.x[k];
+            double tmp1 = D2.z[k] * D1.x[k] - D1.z[k] * D2.x[k];
+            double tmp2 = D2.z[k] * D1.y[k] - D2.y[k] * D1.z[k];
+            double tmp3 = 1.0 / (tmp0 * tmp0 + tmp1 * tmp1 + tmp2 * tmp2);
+            double tmp4 = P2.x[k] - P1.x[k];
+            double tmp5 = P2.y[k] - P1.y[k];
+            double tmp6 = P2.z[k] - P1.z[k];
+            double tmp7 = tmp4 * tmp0 - tmp2 * tmp6;
+            double tmp8 = tmp6 * tmp1 + tmp5 * tmp0;
+            double tmp9 = tmp2 * tmp5 + tmp4 * tmp1;
+            T1[k] = tmp3 * (D2.y[k] * tmp7 + D2.z[k] * tmp9 - D2.x[k] * tmp8);
+            T2[k] = tmp3 * (D1.y[k] * tmp7 + D1.z[k] * tmp9 - D1.x[k] * tmp8);
         }
         #endregion
     }
@@ -136,35 +136,35 @@ public sealed class SkewLinesClosestPointsVectorKernel() : VectorKernel(new Skew
             var item9 = Vector512.LoadUnsafe(ref span9, (nuint)k);
             var item10 = Vector512.LoadUnsafe(ref span10, (nuint)k);
             var item11 = Vector512.LoadUnsafe(ref span11, (nuint)k);
-            var tmp0 = item6 - item0;
-            var tmp1 = item7 - item1;
-            var tmp2 = item8 - item2;
-            var tmp3 = item10 * item3 - item4 * item9;
-            var tmp4 = item11 * item3 - item5 * item9;
-            var tmp5 = item11 * item4 - item10 * item5;
-            var tmp6 = tmpC0 / (tmp3 * tmp3 + tmp4 * tmp4 + tmp5 * tmp5);
-            var tmp7 = tmp0 * tmp3 - tmp5 * tmp2;
-            var tmp8 = tmp2 * tmp4 + tmp1 * tmp3;
-            var tmp9 = tmp5 * tmp1 + tmp0 * tmp4;
-            var result0 = tmp6 * (item10 * tmp7 + item11 * tmp9 - item9 * tmp8);
-            var result1 = tmp6 * (item4 * tmp7 + item5 * tmp9 - item3 * tmp8);
+            var tmp0 = item10 * item3 - item4 * item9;
+            var tmp1 = item11 * item3 - item5 * item9;
+            var tmp2 = item11 * item4 - item10 * item5;
+            var tmp3 = tmpC0 / (tmp0 * tmp0 + tmp1 * tmp1 + tmp2 * tmp2);
+            var tmp4 = item6 - item0;
+            var tmp5 = item7 - item1;
+            var tmp6 = item8 - item2;
+            var tmp7 = tmp4 * tmp0 - tmp2 * tmp6;
+            var tmp8 = tmp6 * tmp1 + tmp5 * tmp0;
+            var tmp9 = tmp2 * tmp5 + tmp4 * tmp1;
+            var result0 = tmp3 * (item10 * tmp7 + item11 * tmp9 - item9 * tmp8);
+            var result1 = tmp3 * (item4 * tmp7 + item5 * tmp9 - item3 * tmp8);
             Vector512.StoreUnsafe(result0, ref span12, (nuint)k);
             Vector512.StoreUnsafe(result1, ref span13, (nuint)k);
         }
         for (; k < count0; k++)
         {
-            double tmp0 = P2.x[k] - P1.x[k];
-            double tmp1 = P2.y[k] - P1.y[k];
-            double tmp2 = P2.z[k] - P1.z[k];
-            double tmp3 = D2.y[k] * D1.x[k] - D1.y[k] * D2.x[k];
-            double tmp4 = D2.z[k] * D1.x[k] - D1.z[k] * D2.x[k];
-            double tmp5 = D2.z[k] * D1.y[k] - D2.y[k] * D1.z[k];
-            double tmp6 = 1.0 / (tmp3 * tmp3 + tmp4 * tmp4 + tmp5 * tmp5);
-            double tmp7 = tmp0 * tmp3 - tmp5 * tmp2;
-            double tmp8 = tmp2 * tmp4 + tmp1 * tmp3;
-            double tmp9 = tmp5 * tmp1 + tmp0 * tmp4;
-            T1[k] = tmp6 * (D2.y[k] * tmp7 + D2.z[k] * tmp9 - D2.x[k] * tmp8);
-            T2[k] = tmp6 * (D1.y[k] * tmp7 + D1.z[k] * tmp9 - D1.x[k] * tmp8);
+            double tmp0 = D2.y[k] * D1.x[k] - D1.y[k] * D2.x[k];
+            double tmp1 = D2.z[k] * D1.x[k] - D1.z[k] * D2.x[k];
+            double tmp2 = D2.z[k] * D1.y[k] - D2.y[k] * D1.z[k];
+            double tmp3 = 1.0 / (tmp0 * tmp0 + tmp1 * tmp1 + tmp2 * tmp2);
+            double tmp4 = P2.x[k] - P1.x[k];
+            double tmp5 = P2.y[k] - P1.y[k];
+            double tmp6 = P2.z[k] - P1.z[k];
+            double tmp7 = tmp4 * tmp0 - tmp2 * tmp6;
+            double tmp8 = tmp6 * tmp1 + tmp5 * tmp0;
+            double tmp9 = tmp2 * tmp5 + tmp4 * tmp1;
+            T1[k] = tmp3 * (D2.y[k] * tmp7 + D2.z[k] * tmp9 - D2.x[k] * tmp8);
+            T2[k] = tmp3 * (D1.y[k] * tmp7 + D1.z[k] * tmp9 - D1.x[k] * tmp8);
         }
         #endregion
     }

@@ -20,10 +20,10 @@ internal static class InstancingKernels
         //GMac.Bind("angle.1", "<angle>");
         double tmp0 = Math.Sqrt(r.yz * r.yz + r.xy * r.xy + r.zx * r.zx);
         double tmp1 = -1.0 / tmp0;
+        angle = 2.0 * Math.Atan2(tmp0, r.s);
         axis.x = r.yz * tmp1;
         axis.y = r.zx * tmp1;
         axis.z = r.xy * tmp1;
-        angle = 2.0 * Math.Atan2(tmp0, r.s);
         #endregion
 
         return (axis, angle);

@@ -55,12 +55,12 @@ internal static class LensKernels
         //GMac.Bind("back", "Vector3D", back);
         //GMac.Bind("d", "Vector3D", d);
         var (tmp0, tmp1) = Math.SinCos(elevation);
-        var (tmp2, tmp4) = Math.SinCos(azimuth);
-        double tmp3 = tmp1 * tmp2;
-        double tmp5 = tmp1 * tmp4;
-        d.x = tmp0 * up.x + tmp3 * right.x - tmp5 * back.x;
-        d.y = tmp0 * up.y + tmp3 * right.y - tmp5 * back.y;
-        d.z = tmp0 * up.z + tmp3 * right.z - tmp5 * back.z;
+        var (tmp2, tmp3) = Math.SinCos(azimuth);
+        double tmp4 = tmp1 * tmp2;
+        double tmp5 = tmp1 * tmp3;
+        d.x = tmp0 * up.x + tmp4 * right.x - tmp5 * back.x;
+        d.y = tmp0 * up.y + tmp4 * right.y - tmp5 * back.y;
+        d.z = tmp0 * up.z + tmp4 * right.z - tmp5 * back.z;
         #endregion
 
         return d;
@@ -84,14 +84,14 @@ internal static class LensKernels
         //GMac.Bind("back", "Vector3D", back);
         //GMac.Bind("d", "Vector3D", d);
         double tmp0 = 1.0 / Math.Sqrt(height * height + radius * radius);
-        double tmp1 = radius * tmp0;
-        var (tmp2, tmp5) = Math.SinCos(azimuth);
-        double tmp3 = tmp2 * tmp1;
-        double tmp4 = height * tmp0;
-        double tmp6 = tmp5 * tmp1;
-        d.x = tmp3 * right.x + tmp4 * up.x - tmp6 * back.x;
-        d.y = tmp3 * right.y + tmp4 * up.y - tmp6 * back.y;
-        d.z = tmp3 * right.z + tmp4 * up.z - tmp6 * back.z;
+        var (tmp1, tmp2) = Math.SinCos(azimuth);
+        double tmp3 = radius * tmp0;
+        double tmp4 = tmp1 * tmp3;
+        double tmp5 = height * tmp0;
+        double tmp6 = tmp2 * tmp3;
+        d.x = tmp4 * right.x + tmp5 * up.x - tmp6 * back.x;
+        d.y = tmp4 * right.y + tmp5 * up.y - tmp6 * back.y;
+        d.z = tmp4 * right.z + tmp5 * up.z - tmp6 * back.z;
         #endregion
 
         return d;
