@@ -81,6 +81,27 @@ public static class MarkdownReport
             Line($"| {r.Kernel.MacroName} | {(r.GeneratedOperations is { } g ? g.ToString() : $"error: {r.GenerationError}")} | {r.Kernel.HandOperations} |");
         Line();
 
+        if (rows.Where(r => r.EstimatedCycles is not null).ToList() is { Count: >= 2 } estimated)
+        {
+            Line("## The cost model against measured time");
+            Line();
+            Line("The generator chooses between forms of a computation by an estimate of time per item (`TimeModel`: the chain of latencies to the outputs, the busiest unit, " +
+                 "and how many items a window of operations in flight overlaps; see docs/cost-model.md). Here that estimate for each kernel's generated code, against the generated code's measured time above.");
+            Line();
+            Line("| kernel | estimated cycles | measured ns | ns per estimated cycle | operations |");
+            Line("|---|---:|---:|---:|---:|");
+            foreach (var r in estimated)
+                Line($"| {r.Kernel.MacroName} | {F(r.EstimatedCycles!.Value)} | {F(r.Timing.GeneratedNs)} | {F2(r.Timing.GeneratedNs / r.EstimatedCycles.Value)} | {r.GeneratedOperations?.Total.ToString(CultureInfo.InvariantCulture) ?? "error"} |");
+            Line();
+            var measured = estimated.Select(r => r.Timing.GeneratedNs).ToList();
+            var byEstimate = RankCorrelation.Spearman(estimated.Select(r => r.EstimatedCycles!.Value).ToList(), measured);
+            var byOperations = RankCorrelation.Spearman(estimated.Select(r => (double)(r.GeneratedOperations?.Total ?? 0)).ToList(), measured);
+            var perCycle = estimated.Select(r => r.Timing.GeneratedNs / r.EstimatedCycles!.Value).Order().ToList();
+            Line($"Rank correlation (Spearman) with the measured times over the {estimated.Count} kernels: the estimate **{F2(byEstimate)}**, the operation count {F2(byOperations)}. " +
+                 $"One estimated cycle measured {F2(perCycle[perCycle.Count / 2])} ns (median; {F2(perCycle[0])}–{F2(perCycle[^1])}).");
+            Line();
+        }
+
         if (vectorSection is not null) sb.Append(vectorSection);
 
         if (accuracySection is not null) sb.Append(accuracySection);

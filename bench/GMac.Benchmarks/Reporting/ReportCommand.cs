@@ -121,7 +121,8 @@ public static class ReportCommand
         {
             try
             {
-                return new KernelRow(k, t, counter.Count(k), null);
+                var (operations, cycles) = counter.Measure(k);
+                return new KernelRow(k, t, operations, null) { EstimatedCycles = cycles };
             }
             catch (InvalidOperationException e)
             {

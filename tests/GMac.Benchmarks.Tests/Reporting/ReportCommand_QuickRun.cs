@@ -34,6 +34,11 @@ public class ReportCommand_QuickRun
             for (var i = 0; i < KernelCatalog.Names.Count; i++)
                 Assert.StartsWith($"| {KernelCatalog.Names[i]} |", markdown[vector + 2 + i]);
             Assert.StartsWith("| geometric mean |", markdown[vector + 2 + KernelCatalog.Names.Count]);
+            var model = Array.FindIndex(markdown, l => l.StartsWith("| kernel | estimated cycles |", StringComparison.Ordinal));
+            Assert.True(model > header, "no cost-model table");
+            for (var i = 0; i < KernelCatalog.Names.Count; i++)
+                Assert.StartsWith($"| {KernelCatalog.Names[i]} |", markdown[model + 2 + i]);
+            Assert.Contains(markdown, l => l.StartsWith("Rank correlation (Spearman) with the measured times", StringComparison.Ordinal));
             var png = File.ReadAllBytes(Path.Combine(folder, ReportCommand.ChartFile));
             Assert.Equal(0x89, png[0]);
             Assert.Empty(Directory.GetFiles(folder, "*.tmp"));
