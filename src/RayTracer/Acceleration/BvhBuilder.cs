@@ -1,4 +1,5 @@
 using System.Runtime.CompilerServices;
+using System.Runtime.ExceptionServices;
 using System.Runtime.InteropServices;
 using System.Runtime.Intrinsics;
 using RayTracer.Bounds;
@@ -29,6 +30,7 @@ internal sealed class BvhBuilder
     private readonly int _maxLeafSize;
     private readonly int _maxDepth;
     private readonly Parallelism _parallelism;
+    private readonly List<SubtreeJob> _offered = [];
     private int _nodeCount;
 
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
@@ -187,6 +189,7 @@ internal sealed class BvhBuilder
         Interior(index, start, mid, end, left, right, depth);
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void Interior(int index, int start, int mid, int end, (Box Box, Box Centroids) left, (Box Box, Box Centroids) right, int depth)
     {
         int first = Interlocked.Add(ref _nodeCount, 2) - 2;
@@ -194,14 +197,97 @@ internal sealed class BvhBuilder
         _nodes[index] = new BvhNode { Min = union.Min, Max = union.Max, Offset = first, Count = 0 };
         if (end - start >= _parallelism.Subtrees)
         {
-            var task = Task.Run(() => Subtree(first, start, mid, left.Box, left.Centroids, depth + 1));
+            // The left subtree is offered to the other threads while this one builds the right; then this
+            // thread builds the left too unless another has taken it (waiting for a pool thread to wake up
+            // can take longer than a small subtree, and a thread outside the pool cannot run a queued task inline).
+            var job = new SubtreeJob(this, first, start, mid, left, depth + 1);
+            Offer(job);
             Subtree(first + 1, mid, end, right.Box, right.Centroids, depth + 1);
-            task.Wait();
+            Join(job);
         }
         else
         {
             Subtree(first, start, mid, left.Box, left.Centroids, depth + 1);
             Subtree(first + 1, mid, end, right.Box, right.Centroids, depth + 1);
+        }
+    }
+
+    private void Offer(SubtreeJob job)
+    {
+        lock (_offered)
+            _offered.Add(job);
+        ThreadPool.UnsafeQueueUserWorkItem(static builder => builder.RunOffered(oldest: true), this, preferLocal: false);
+    }
+
+    /// <summary>
+    /// Runs one offered subtree that no thread has claimed, if there is one: the oldest (the largest), for a
+    /// thread joining in, or the newest, for one waiting on a subtree that another thread builds.
+    /// </summary>
+    private bool RunOffered(bool oldest)
+    {
+        SubtreeJob? job = null;
+        lock (_offered)
+        {
+            while (job is null && _offered.Count > 0)
+            {
+                int k = oldest ? 0 : _offered.Count - 1;
+                var candidate = _offered[k];
+                _offered.RemoveAt(k);
+                if (candidate.TryClaim())
+                    job = candidate;
+            }
+        }
+
+        job?.Run();
+        return job is not null;
+    }
+
+    /// <summary>Returns once <paramref name="job"/> is built: here if no thread has claimed it, else helping with other offered subtrees meanwhile.</summary>
+    private void Join(SubtreeJob job)
+    {
+        if (job.TryClaim())
+        {
+            job.Run();
+        }
+        else
+        {
+            var spin = new SpinWait();
+            while (!job.Done)
+            {
+                if (!RunOffered(oldest: false))
+                    spin.SpinOnce(sleep1Threshold: -1);
+            }
+        }
+
+        job.Failure?.Throw();
+    }
+
+    /// <summary>A subtree offered to other threads; whichever thread claims it first builds it.</summary>
+    private sealed class SubtreeJob(BvhBuilder builder, int index, int start, int end, (Box Box, Box Centroids) bounds, int depth)
+    {
+        private int _claimed;
+        private volatile bool _done;
+
+        public bool Done => _done;
+
+        public ExceptionDispatchInfo? Failure { get; private set; }
+
+        public bool TryClaim() => Interlocked.Exchange(ref _claimed, 1) == 0;
+
+        public void Run()
+        {
+            try
+            {
+                builder.Subtree(index, start, end, bounds.Box, bounds.Centroids, depth);
+            }
+            catch (Exception e)
+            {
+                Failure = ExceptionDispatchInfo.Capture(e); // rethrown by the thread that offered it
+            }
+            finally
+            {
+                _done = true;
+            }
         }
     }
 
