@@ -323,31 +323,9 @@ internal sealed class BvhBuilder
         int binCount = BinsFor(count);
         var (lo, scale, _) = BinScale(centroids, binCount);
         if (count < _parallelism.Binning)
-        {
             Bin(start, end, lo, scale, binCount, bins, counts);
-        }
         else
-        {
-            // Near the root the subtrees are still few: the processors bin slices and the bins are merged.
-            int slices = Environment.ProcessorCount;
-            var sliceBins = new Box[slices][];
-            var sliceCounts = new Vector128<int>[slices][];
-            Parallel.For(0, slices, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (k) =>
-            {
-                sliceBins[k] = new Box[3 * BinCount];
-                sliceCounts[k] = new Vector128<int>[BinCount];
-                Bin(start + (int)((long)count * k / slices), start + (int)((long)count * (k + 1) / slices), lo, scale, binCount, sliceBins[k], sliceCounts[k]);
-            });
-            bins.Fill(Empty);
-            counts.Clear();
-            for (int k = 0; k < slices; k++)
-            {
-                for (int b = 0; b < bins.Length; b++)
-                    bins[b] = Union(bins[b], sliceBins[k][b]);
-                for (int b = 0; b < counts.Length; b++)
-                    counts[b] += sliceCounts[k][b];
-            }
-        }
+            BinInSlices(start, end, lo, scale, binCount, bins, counts);
 
         // Sweep from the right for the half area and group count of every right-hand side, then from the left.
         Span<Vector128<float>> rightCost = stackalloc Vector128<float>[BinCount];
@@ -394,6 +372,35 @@ internal sealed class BvhBuilder
         }
 
         return (bestAxis, bestAxis < 0 ? 1 : bestSplit.GetElement(bestAxis), bestCost);
+    }
+
+    /// <summary>
+    /// <see cref="Bin"/> for the largest ranges, near the root, where the subtrees are still few: the
+    /// processors bin slices and the bins are merged. (A method of its own, so that the closure is not
+    /// allocated for every node.)
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    private void BinInSlices(int start, int end, Vector128<float> lo, Vector128<float> scale, int binCount, Span<Box> bins, Span<Vector128<int>> counts)
+    {
+        int count = end - start;
+        int slices = Environment.ProcessorCount;
+        var sliceBins = new Box[slices][];
+        var sliceCounts = new Vector128<int>[slices][];
+        Parallel.For(0, slices, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (k) =>
+        {
+            sliceBins[k] = new Box[3 * BinCount];
+            sliceCounts[k] = new Vector128<int>[BinCount];
+            Bin(start + (int)((long)count * k / slices), start + (int)((long)count * (k + 1) / slices), lo, scale, binCount, sliceBins[k], sliceCounts[k]);
+        });
+        bins.Fill(Empty);
+        counts.Clear();
+        for (int k = 0; k < slices; k++)
+        {
+            for (int b = 0; b < bins.Length; b++)
+                bins[b] = Union(bins[b], sliceBins[k][b]);
+            for (int b = 0; b < counts.Length; b++)
+                counts[b] += sliceCounts[k][b];
+        }
     }
 
     /// <summary>Half the surface areas of three boxes, in lanes 0 to 2 (lane 3 zero).</summary>
