@@ -98,7 +98,7 @@ internal sealed class BvhBuilder
     /// </summary>
     internal readonly record struct Parallelism(int Subtrees, int Binning, int Chunk)
     {
-        public static Parallelism Default => new(1024, 1 << 17, 1 << 16);
+        public static Parallelism Default => new(256, 1 << 17, 1 << 16);
 
         public static Parallelism None => new(int.MaxValue, int.MaxValue, int.MaxValue);
     }
