@@ -69,7 +69,7 @@ public sealed class Bvh : AccelerationStructure
         Collapse(0);
         permute?.Wait();
         int groupCount = DescribeLeaves(_leaves);
-        _groups = FillGroups(_leaves, groupCount, Math.Max(1, parallelism.Chunk / 16));
+        _groups = FillGroups(_leaves, groupCount, Math.Max(1, parallelism.Chunk / 256));
         if (_leaves.Any(leaf => leaf.Group < 0 || !leaf.GroupsCastShadows))
             Table.PackTriangles(); // some leaves test their primitives one by one
         BinaryNodeCount = binaryNodes;

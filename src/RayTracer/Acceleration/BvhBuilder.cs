@@ -93,7 +93,7 @@ internal sealed class BvhBuilder
     /// Sizes from which work is shared among threads: subtrees of at least <see cref="Subtrees"/> primitives
     /// are built in parallel, ranges of at least <see cref="Binning"/> are binned by all processors
     /// together, and the loops over all primitives run in chunks of <see cref="Chunk"/> (leaves: a
-    /// sixteenth of it). The results do not depend on them; tests set them low to run the parallel paths
+    /// 256th of it). The results do not depend on them; tests set them low to run the parallel paths
     /// on small meshes.
     /// </summary>
     internal readonly record struct Parallelism(int Subtrees, int Binning, int Chunk)
