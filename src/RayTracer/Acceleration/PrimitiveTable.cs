@@ -154,6 +154,7 @@ internal sealed class PrimitiveTable
         }
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static PrimitiveKind KindOf(TriangleTest test) => test switch
     {
         TriangleTest.Plucker => PrimitiveKind.Plucker,
