@@ -36,6 +36,7 @@ internal sealed class BvhBuilder
     private readonly Parallelism _parallelism;
     private readonly List<SubtreeJob> _offered = [];
     private bool _anyOffered;
+    private readonly int _offerFrom;
     private int _nodeCount;
 
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
@@ -43,7 +44,10 @@ internal sealed class BvhBuilder
     {
         _parallelism = parallelism;
         int n = bounds.Length;
-        if (n >= 2L * parallelism.Subtrees && Environment.ProcessorCount > 1)
+        // On a large mesh, a few hundred subtrees are enough to keep the threads busy; offering each one
+        // has a cost (a pool work item, a lock).
+        _offerFrom = Math.Max(parallelism.Subtrees, n / 128);
+        if (n >= 2L * _offerFrom && Environment.ProcessorCount > 1)
             ThreadPool.UnsafeQueueUserWorkItem(static builder => builder.AwaitFirstOffer(), this, preferLocal: false);
         // Written before read: no need to zero them (nodes past the count are never touched).
         _refs = GC.AllocateUninitializedArray<PrimitiveReference>(n);
@@ -98,10 +102,10 @@ internal sealed class BvhBuilder
 
     /// <summary>
     /// Sizes from which work is shared among threads: subtrees of at least <see cref="Subtrees"/> primitives
-    /// are built in parallel, ranges of at least <see cref="Binning"/> are binned by all processors
-    /// together, and the loops over all primitives run in chunks of <see cref="Chunk"/> (leaves: a
-    /// 256th of it). The results do not depend on them; tests set them low to run the parallel paths
-    /// on small meshes.
+    /// (and at least 1/128 of them all) are offered to other threads, ranges of at least
+    /// <see cref="Binning"/> are binned by all processors together, and the loops over all primitives run
+    /// in chunks of <see cref="Chunk"/> (leaves: a 256th of it). The results do not depend on them; tests
+    /// set them low to run the parallel paths on small meshes.
     /// </summary>
     internal readonly record struct Parallelism(int Subtrees, int Binning, int Chunk)
     {
@@ -202,7 +206,7 @@ internal sealed class BvhBuilder
         int first = Interlocked.Add(ref _nodeCount, 2) - 2;
         var union = Union(left.Box, right.Box);
         _nodes[index] = new BvhNode { Min = union.Min, Max = union.Max, Offset = first, Count = 0 };
-        if (end - start >= _parallelism.Subtrees)
+        if (end - start >= _offerFrom)
         {
             // The left subtree is offered to the other threads while this one builds the right; then this
             // thread builds the left too unless another has taken it (waiting for a pool thread to wake up
@@ -272,6 +276,14 @@ internal sealed class BvhBuilder
     {
         if (job.TryClaim())
         {
+            // Usually the newest offer: taken off the list here, so that the list holds only open offers.
+            lock (_offered)
+            {
+                int k = _offered.LastIndexOf(job);
+                if (k >= 0)
+                    _offered.RemoveAt(k);
+            }
+
             job.Run();
         }
         else
