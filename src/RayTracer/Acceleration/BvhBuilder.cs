@@ -1,4 +1,3 @@
-using System.Diagnostics;
 using System.Runtime.CompilerServices;
 using System.Runtime.ExceptionServices;
 using System.Runtime.InteropServices;
@@ -23,9 +22,6 @@ internal sealed class BvhBuilder
     /// <summary>Ranges up to this size are partitioned without branches (<see cref="PartitionSmall"/>).</summary>
     private const int SmallPartition = 32;
 
-    /// <summary>How long the thread woken as the build starts waits for the first subtree (<see cref="AwaitFirstOffer"/>).</summary>
-    private static readonly TimeSpan FirstOfferWait = TimeSpan.FromMicroseconds(200);
-
     private const double TraversalCost = 1.0;
     private const double IntersectionCost = 1.0;
 
@@ -35,7 +31,6 @@ internal sealed class BvhBuilder
     private readonly int _maxDepth;
     private readonly Parallelism _parallelism;
     private readonly List<SubtreeJob> _offered = [];
-    private bool _anyOffered;
     private readonly int _offerFrom;
     private int _nodeCount;
 
@@ -47,8 +42,7 @@ internal sealed class BvhBuilder
         // On a large mesh, a few hundred subtrees are enough to keep the threads busy; offering each one
         // has a cost (a pool work item, a lock).
         _offerFrom = Math.Max(parallelism.Subtrees, n / 128);
-        if (n >= 2L * _offerFrom && Environment.ProcessorCount > 1)
-            ThreadPool.UnsafeQueueUserWorkItem(static builder => builder.AwaitFirstOffer(), this, preferLocal: false);
+
         // Written before read: no need to zero them (nodes past the count are never touched).
         _refs = GC.AllocateUninitializedArray<PrimitiveReference>(n);
         ChunkedLoop.For(n, parallelism.Chunk, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
@@ -227,25 +221,7 @@ internal sealed class BvhBuilder
     {
         lock (_offered)
             _offered.Add(job);
-        Volatile.Write(ref _anyOffered, true);
         ThreadPool.UnsafeQueueUserWorkItem(static builder => builder.RunOffered(oldest: true), this, preferLocal: false);
-    }
-
-    /// <summary>
-    /// Run by a pool thread woken as the build starts: a pool thread takes tens of microseconds or more to
-    /// wake up, about as long as a small mesh's root split, so this one is under way when the root's first
-    /// subtree is offered. It waits at most <see cref="FirstOfferWait"/> (on a large mesh the root split
-    /// takes longer, and the threads woken for each offer suffice), then builds offered subtrees while any is left.
-    /// </summary>
-    private void AwaitFirstOffer()
-    {
-        long deadline = Stopwatch.GetTimestamp() + (long)(FirstOfferWait.TotalSeconds * Stopwatch.Frequency);
-        var spin = new SpinWait();
-        while (!Volatile.Read(ref _anyOffered) && Stopwatch.GetTimestamp() < deadline)
-            spin.SpinOnce(sleep1Threshold: -1);
-        while (RunOffered(oldest: true))
-        {
-        }
     }
 
     /// <summary>
