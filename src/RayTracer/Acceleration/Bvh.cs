@@ -68,9 +68,9 @@ public sealed class Bvh : AccelerationStructure
         _leaves = GC.AllocateUninitializedArray<BvhLeaf>((binaryNodes + 1) / 2);
         Collapse(0);
         permute?.Wait();
-        int groupCount = DescribeLeaves(_leaves);
-        _groups = FillGroups(_leaves, groupCount, Math.Max(1, parallelism.Chunk / 16));
-        if (_leaves.Any(leaf => leaf.Group < 0 || !leaf.GroupsCastShadows))
+        int groupCount = DescribeLeaves(_leaves, out bool oneByOne);
+        _groups = FillGroups(_leaves, groupCount, Math.Max(1, parallelism.Chunk / 256));
+        if (oneByOne)
             Table.PackTriangles(); // some leaves test their primitives one by one
         BinaryNodeCount = binaryNodes;
         _nodes = [];
@@ -266,12 +266,14 @@ public sealed class Bvh : AccelerationStructure
 
     /// <summary>
     /// The leaves, each with its run of four-lane groups when all its primitives are Möller–Trumbore
-    /// triangles; returns the number of groups.
+    /// triangles; returns the number of groups. <paramref name="oneByOne"/> tells whether some leaf tests its
+    /// primitives one by one (in one query or both), which needs the table's packed triangles.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    private int DescribeLeaves(BvhLeaf[] leaves)
+    private int DescribeLeaves(BvhLeaf[] leaves, out bool oneByOne)
     {
         int groupCount = 0;
+        oneByOne = false;
         for (int l = 0; l < leaves.Length; l++)
         {
             int first = leaves[l].First, count = leaves[l].Count;
@@ -292,6 +294,8 @@ public sealed class Bvh : AccelerationStructure
                 leaves[l].GroupsCastShadows = castShadows;
                 groupCount += leaves[l].GroupCount;
             }
+
+            oneByOne |= !(triangles && castShadows);
         }
 
         return groupCount;
@@ -334,6 +338,7 @@ public sealed class Bvh : AccelerationStructure
     /// Turns the binary subtree at <paramref name="binary"/> into a four-wide node: its children are
     /// opened, largest surface area first, until there are four slots or only leaves remain.
     /// </summary>
+    [SkipLocalsInit]
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private int Collapse(int binary)
     {

@@ -1,4 +1,5 @@
 using System.Runtime.CompilerServices;
+using System.Runtime.ExceptionServices;
 using System.Runtime.InteropServices;
 using System.Runtime.Intrinsics;
 using RayTracer.Bounds;
@@ -29,6 +30,8 @@ internal sealed class BvhBuilder
     private readonly int _maxLeafSize;
     private readonly int _maxDepth;
     private readonly Parallelism _parallelism;
+    private readonly List<SubtreeJob> _offered = [];
+    private readonly int _offerFrom;
     private int _nodeCount;
 
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
@@ -36,6 +39,10 @@ internal sealed class BvhBuilder
     {
         _parallelism = parallelism;
         int n = bounds.Length;
+        // On a large mesh, a few hundred subtrees are enough to keep the threads busy; offering each one
+        // has a cost (a pool work item, a lock).
+        _offerFrom = Math.Max(parallelism.Subtrees, n / 128);
+
         // Written before read: no need to zero them (nodes past the count are never touched).
         _refs = GC.AllocateUninitializedArray<PrimitiveReference>(n);
         ChunkedLoop.For(n, parallelism.Chunk, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
@@ -89,14 +96,14 @@ internal sealed class BvhBuilder
 
     /// <summary>
     /// Sizes from which work is shared among threads: subtrees of at least <see cref="Subtrees"/> primitives
-    /// are built in parallel, ranges of at least <see cref="Binning"/> are binned by all processors
-    /// together, and the loops over all primitives run in chunks of <see cref="Chunk"/> (leaves: a
-    /// sixteenth of it). The results do not depend on them; tests set them low to run the parallel paths
-    /// on small meshes.
+    /// (and at least 1/128 of them all) are offered to other threads, ranges of at least
+    /// <see cref="Binning"/> are binned by all processors together, and the loops over all primitives run
+    /// in chunks of <see cref="Chunk"/> (leaves: a 256th of it). The results do not depend on them; tests
+    /// set them low to run the parallel paths on small meshes.
     /// </summary>
     internal readonly record struct Parallelism(int Subtrees, int Binning, int Chunk)
     {
-        public static Parallelism Default => new(1024, 1 << 17, 1 << 16);
+        public static Parallelism Default => new(256, 1 << 17, 1 << 16);
 
         public static Parallelism None => new(int.MaxValue, int.MaxValue, int.MaxValue);
     }
@@ -187,21 +194,113 @@ internal sealed class BvhBuilder
         Interior(index, start, mid, end, left, right, depth);
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void Interior(int index, int start, int mid, int end, (Box Box, Box Centroids) left, (Box Box, Box Centroids) right, int depth)
     {
         int first = Interlocked.Add(ref _nodeCount, 2) - 2;
         var union = Union(left.Box, right.Box);
         _nodes[index] = new BvhNode { Min = union.Min, Max = union.Max, Offset = first, Count = 0 };
-        if (end - start >= _parallelism.Subtrees)
+        if (end - start >= _offerFrom)
         {
-            var task = Task.Run(() => Subtree(first, start, mid, left.Box, left.Centroids, depth + 1));
+            // The left subtree is offered to the other threads while this one builds the right; then this
+            // thread builds the left too unless another has taken it (waiting for a pool thread to wake up
+            // can take longer than a small subtree, and a thread outside the pool cannot run a queued task inline).
+            var job = new SubtreeJob(this, first, start, mid, left, depth + 1);
+            Offer(job);
             Subtree(first + 1, mid, end, right.Box, right.Centroids, depth + 1);
-            task.Wait();
+            Join(job);
         }
         else
         {
             Subtree(first, start, mid, left.Box, left.Centroids, depth + 1);
             Subtree(first + 1, mid, end, right.Box, right.Centroids, depth + 1);
+        }
+    }
+
+    private void Offer(SubtreeJob job)
+    {
+        lock (_offered)
+            _offered.Add(job);
+        ThreadPool.UnsafeQueueUserWorkItem(static builder => builder.RunOffered(oldest: true), this, preferLocal: false);
+    }
+
+    /// <summary>
+    /// Runs one offered subtree that no thread has claimed, if there is one: the oldest (the largest), for a
+    /// thread joining in, or the newest, for one waiting on a subtree that another thread builds.
+    /// </summary>
+    private bool RunOffered(bool oldest)
+    {
+        SubtreeJob? job = null;
+        lock (_offered)
+        {
+            while (job is null && _offered.Count > 0)
+            {
+                int k = oldest ? 0 : _offered.Count - 1;
+                var candidate = _offered[k];
+                _offered.RemoveAt(k);
+                if (candidate.TryClaim())
+                    job = candidate;
+            }
+        }
+
+        job?.Run();
+        return job is not null;
+    }
+
+    /// <summary>Returns once <paramref name="job"/> is built: here if no thread has claimed it, else helping with other offered subtrees meanwhile.</summary>
+    private void Join(SubtreeJob job)
+    {
+        if (job.TryClaim())
+        {
+            // Usually the newest offer: taken off the list here, so that the list holds only open offers.
+            lock (_offered)
+            {
+                int k = _offered.LastIndexOf(job);
+                if (k >= 0)
+                    _offered.RemoveAt(k);
+            }
+
+            job.Run();
+        }
+        else
+        {
+            var spin = new SpinWait();
+            while (!job.Done)
+            {
+                if (!RunOffered(oldest: false))
+                    spin.SpinOnce(sleep1Threshold: -1);
+            }
+        }
+
+        job.Failure?.Throw();
+    }
+
+    /// <summary>A subtree offered to other threads; whichever thread claims it first builds it.</summary>
+    private sealed class SubtreeJob(BvhBuilder builder, int index, int start, int end, (Box Box, Box Centroids) bounds, int depth)
+    {
+        private int _claimed;
+        private volatile bool _done;
+
+        public bool Done => _done;
+
+        public ExceptionDispatchInfo? Failure { get; private set; }
+
+        public bool TryClaim() => Interlocked.Exchange(ref _claimed, 1) == 0;
+
+        public void Run()
+        {
+            try
+            {
+                builder.Subtree(index, start, end, bounds.Box, bounds.Centroids, depth);
+            }
+            catch (Exception e)
+            {
+                Failure = ExceptionDispatchInfo.Capture(e); // rethrown by the thread that offered it
+            }
+            finally
+            {
+                _done = true;
+            }
         }
     }
 
@@ -237,31 +336,9 @@ internal sealed class BvhBuilder
         int binCount = BinsFor(count);
         var (lo, scale, _) = BinScale(centroids, binCount);
         if (count < _parallelism.Binning)
-        {
             Bin(start, end, lo, scale, binCount, bins, counts);
-        }
         else
-        {
-            // Near the root the subtrees are still few: the processors bin slices and the bins are merged.
-            int slices = Environment.ProcessorCount;
-            var sliceBins = new Box[slices][];
-            var sliceCounts = new Vector128<int>[slices][];
-            Parallel.For(0, slices, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (k) =>
-            {
-                sliceBins[k] = new Box[3 * BinCount];
-                sliceCounts[k] = new Vector128<int>[BinCount];
-                Bin(start + (int)((long)count * k / slices), start + (int)((long)count * (k + 1) / slices), lo, scale, binCount, sliceBins[k], sliceCounts[k]);
-            });
-            bins.Fill(Empty);
-            counts.Clear();
-            for (int k = 0; k < slices; k++)
-            {
-                for (int b = 0; b < bins.Length; b++)
-                    bins[b] = Union(bins[b], sliceBins[k][b]);
-                for (int b = 0; b < counts.Length; b++)
-                    counts[b] += sliceCounts[k][b];
-            }
-        }
+            BinInSlices(start, end, lo, scale, binCount, bins, counts);
 
         // Sweep from the right for the half area and group count of every right-hand side, then from the left.
         Span<Vector128<float>> rightCost = stackalloc Vector128<float>[BinCount];
@@ -308,6 +385,35 @@ internal sealed class BvhBuilder
         }
 
         return (bestAxis, bestAxis < 0 ? 1 : bestSplit.GetElement(bestAxis), bestCost);
+    }
+
+    /// <summary>
+    /// <see cref="Bin"/> for the largest ranges, near the root, where the subtrees are still few: the
+    /// processors bin slices and the bins are merged. (A method of its own, so that the closure is not
+    /// allocated for every node.)
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    private void BinInSlices(int start, int end, Vector128<float> lo, Vector128<float> scale, int binCount, Span<Box> bins, Span<Vector128<int>> counts)
+    {
+        int count = end - start;
+        int slices = Environment.ProcessorCount;
+        var sliceBins = new Box[slices][];
+        var sliceCounts = new Vector128<int>[slices][];
+        Parallel.For(0, slices, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (k) =>
+        {
+            sliceBins[k] = new Box[3 * BinCount];
+            sliceCounts[k] = new Vector128<int>[BinCount];
+            Bin(start + (int)((long)count * k / slices), start + (int)((long)count * (k + 1) / slices), lo, scale, binCount, sliceBins[k], sliceCounts[k]);
+        });
+        bins.Fill(Empty);
+        counts.Clear();
+        for (int k = 0; k < slices; k++)
+        {
+            for (int b = 0; b < bins.Length; b++)
+                bins[b] = Union(bins[b], sliceBins[k][b]);
+            for (int b = 0; b < counts.Length; b++)
+                counts[b] += sliceCounts[k][b];
+        }
     }
 
     /// <summary>Half the surface areas of three boxes, in lanes 0 to 2 (lane 3 zero).</summary>

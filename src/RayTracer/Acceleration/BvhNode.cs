@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
 
 namespace RayTracer.Acceleration;
@@ -18,6 +19,7 @@ internal struct BvhNode
     /// <summary>The box's surface area, computed in double as <see cref="Bounds.BoundingBox.SurfaceArea"/> would.</summary>
     public readonly double SurfaceArea
     {
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         get
         {
             double dx = (double)Max.GetElement(0) - Min.GetElement(0);

@@ -37,21 +37,52 @@ internal sealed class PrimitiveTable
         var source = objects as GeometricObject[] ?? [.. objects];
         int n = source.Length;
 
-        // Boxes in parallel (a virtual call each); the objects are sorted into bounded and unbounded
-        // ones only when some box is empty or infinite.
-        var boxes = new BoundingBox[n];
+        // One pass in parallel chunks: each object's box, kind and shadow flag, and the scene's box. Mesh
+        // triangles, by far the most common, are recognized by their (sealed) type and read without a
+        // virtual or interface call. The objects are sorted into bounded and unbounded ones only when
+        // some box is empty or infinite.
+        var boxes = GC.AllocateUninitializedArray<BoundingBox>(n);
+        var kinds = GC.AllocateUninitializedArray<PrimitiveKind>(n);
+        var shadows = GC.AllocateUninitializedArray<bool>(n);
         int unusual = 0;
+        var sceneBounds = BoundingBox.Empty;
+        var gate = new object();
         ChunkedLoop.For(n, ChunkSize, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
         {
             bool any = false;
+            // Componentwise, so that nothing here waits for tiered compilation.
+            double x0 = double.PositiveInfinity, y0 = x0, z0 = x0, x1 = double.NegativeInfinity, y1 = x1, z1 = x1;
             for (int i = start; i < end; i++)
             {
-                boxes[i] = source[i].GetBoundingBox();
-                any |= boxes[i].IsEmpty || !boxes[i].IsFinite;
+                var o = source[i];
+                BoundingBox b;
+                if (o is MeshTriangle triangle)
+                {
+                    b = triangle.GetBoundingBox();
+                    shadows[i] = triangle.CastsShadows;
+                    kinds[i] = KindOf(triangle.Test);
+                }
+                else
+                {
+                    b = o.GetBoundingBox();
+                    shadows[i] = o.CastsShadows;
+                    kinds[i] = o is ITriangle tri ? KindOf(tri.Test) : PrimitiveKind.Object;
+                }
+
+                boxes[i] = b;
+                any |= b.IsEmpty || !b.IsFinite;
+                x0 = Math.Min(x0, b.Min.x);
+                y0 = Math.Min(y0, b.Min.y);
+                z0 = Math.Min(z0, b.Min.z);
+                x1 = Math.Max(x1, b.Max.x);
+                y1 = Math.Max(y1, b.Max.y);
+                z1 = Math.Max(z1, b.Max.z);
             }
 
             if (any)
                 Volatile.Write(ref unusual, 1);
+            lock (gate)
+                sceneBounds.Include(new BoundingBox(new Point3D(x0, y0, z0), new Point3D(x1, y1, z1)));
         });
 
         if (unusual == 0)
@@ -59,60 +90,35 @@ internal sealed class PrimitiveTable
             Objects = ReferenceEquals(source, objects) ? [.. source] : source;
             Bounds = boxes;
             Unbounded = [];
-        }
-        else
-        {
-            var bounded = new List<GeometricObject>(n);
-            var bounds = new List<BoundingBox>(n);
-            var unbounded = new List<GeometricObject>();
-            for (int i = 0; i < n; i++)
-            {
-                if (boxes[i].IsEmpty)
-                    continue; // nothing to hit
-                if (boxes[i].IsFinite)
-                {
-                    bounded.Add(source[i]);
-                    bounds.Add(boxes[i]);
-                }
-                else
-                {
-                    unbounded.Add(source[i]);
-                }
-            }
-
-            Objects = [.. bounded];
-            Bounds = [.. bounds];
-            Unbounded = [.. unbounded];
+            _kind = kinds;
+            _castsShadows = shadows;
+            SceneBounds = sceneBounds;
+            return;
         }
 
-        n = Objects.Length;
-        _kind = new PrimitiveKind[n];
-        _castsShadows = new bool[n];
-
-        var sceneBounds = BoundingBox.Empty;
-        var gate = new object();
-        ChunkedLoop.For(n, ChunkSize, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
+        var bounded = new List<int>(n);
+        var unbounded = new List<GeometricObject>();
+        sceneBounds = BoundingBox.Empty;
+        for (int i = 0; i < n; i++)
         {
-            // Componentwise, so that nothing here waits for tiered compilation.
-            double x0 = double.PositiveInfinity, y0 = x0, z0 = x0, x1 = double.NegativeInfinity, y1 = x1, z1 = x1;
-            for (int i = start; i < end; i++)
+            if (boxes[i].IsEmpty)
+                continue; // nothing to hit
+            if (boxes[i].IsFinite)
             {
-                var o = Objects[i];
-                ref readonly var b = ref Bounds[i];
-                x0 = Math.Min(x0, b.Min.x);
-                y0 = Math.Min(y0, b.Min.y);
-                z0 = Math.Min(z0, b.Min.z);
-                x1 = Math.Max(x1, b.Max.x);
-                y1 = Math.Max(y1, b.Max.y);
-                z1 = Math.Max(z1, b.Max.z);
-                _castsShadows[i] = o.CastsShadows;
-                _kind[i] = o is ITriangle tri ? KindOf(tri.Test) : PrimitiveKind.Object;
+                bounded.Add(i);
+                sceneBounds.Include(boxes[i]);
             }
+            else
+            {
+                unbounded.Add(source[i]);
+            }
+        }
 
-            lock (gate)
-                sceneBounds.Include(new BoundingBox(new Point3D(x0, y0, z0), new Point3D(x1, y1, z1)));
-        });
-
+        Objects = [.. bounded.Select(i => source[i])];
+        Bounds = [.. bounded.Select(i => boxes[i])];
+        _kind = [.. bounded.Select(i => kinds[i])];
+        _castsShadows = [.. bounded.Select(i => shadows[i])];
+        Unbounded = [.. unbounded];
         SceneBounds = sceneBounds;
     }
 
@@ -148,6 +154,7 @@ internal sealed class PrimitiveTable
         }
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static PrimitiveKind KindOf(TriangleTest test) => test switch
     {
         TriangleTest.Plucker => PrimitiveKind.Plucker,
