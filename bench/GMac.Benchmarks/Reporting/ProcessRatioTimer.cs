@@ -6,7 +6,7 @@ namespace GMac.Benchmarks.Reporting;
 /// <summary>
 /// The generated / hand ratio of a kernel as the median over several fresh processes, each running
 /// <c>kernels --ratio</c> (a median over pairs of slices), every other one compiling the hand code
-/// first. Within one process the two loops' machine code is fixed, but where the JIT puts it and when
+/// first (an even count balances the two orders; the median is then the mean of the middle two). Within one process the two loops' machine code is fixed, but where the JIT puts it and when
 /// it replaces its first code are not: identical arithmetic was measured at ratios from 0.92 to 1.30
 /// in five processes, steady within each. One process's figure is one draw of that; the median of
 /// several is the kernel's.
