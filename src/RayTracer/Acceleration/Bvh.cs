@@ -1,8 +1,6 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
-using System.Runtime.InteropServices;
 using System.Runtime.Intrinsics;
-using System.Runtime.Intrinsics.X86;
 using RayTracer.Bounds;
 using RayTracer.Geometry;
 using RayTracer.Kernels;
@@ -34,14 +32,8 @@ public sealed class Bvh : AccelerationStructure
     // Slack for the far distance of the vector slab test; see WideRay.
     private static readonly Vector256<double> FarSlackVector = Vector256.Create(FarSlack);
 
-    // Nodes start on a cache line: a node is then exactly two lines.
-    private const int NodeAlignment = 64;
-
     private readonly BvhNode[] _nodes;
-
-    // Pinned (it never moves), one node longer than needed; node 0 is _wideOffset bytes into it, on a cache line.
     private readonly Bvh4Node[] _wide = [];
-    private readonly int _wideOffset;
     private readonly BvhLeaf[] _leaves = [];
     private readonly TriangleGroup4[] _groups = [];
     private int _wideCount;
@@ -75,9 +67,7 @@ public sealed class Bvh : AccelerationStructure
         var permute = parallelism.Chunk < n ? Task.Run(() => Table.Permute(order)) : null;
         if (permute is null)
             Table.Permute(order);
-        _wide = GC.AllocateUninitializedArray<Bvh4Node>(Math.Max(1, (binaryNodes - 1) / 2) + 1, pinned: true);
-        long address = Marshal.UnsafeAddrOfPinnedArrayElement(_wide, 0);
-        _wideOffset = (int)((NodeAlignment - (address & (NodeAlignment - 1))) & (NodeAlignment - 1));
+        _wide = GC.AllocateUninitializedArray<Bvh4Node>(Math.Max(1, (binaryNodes - 1) / 2));
         _leaves = GC.AllocateUninitializedArray<BvhLeaf>((binaryNodes + 1) / 2);
         Collapse(0);
         permute?.Wait();
@@ -97,23 +87,21 @@ public sealed class Bvh : AccelerationStructure
     /// <summary>Nodes of the four-wide tree used for traversal.</summary>
     public int NodeCount => _wideCount;
 
-    /// <summary>Wide node 0, on a cache line; node i is <c>Unsafe.Add(ref root, i)</c>.</summary>
-    private ref Bvh4Node WideRoot
-    {
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        get => ref Unsafe.AddByteOffset(ref MemoryMarshal.GetArrayDataReference(_wide), (nint)_wideOffset);
-    }
+    private protected override bool TraverseNearest(in Ray ray, ref double t, ref int primitive) =>
+        _wide.Length != 0 && (WideRay.MovesAlongEveryAxis(ray)
+            ? Nearest<SameOrigin>(ray, ref t, ref primitive)
+            : Nearest<MovedOrigin>(ray, ref t, ref primitive));
 
+    private protected override bool TraverseAny(in Ray ray, double tMax) =>
+        _wide.Length != 0 && (WideRay.MovesAlongEveryAxis(ray) ? Any<SameOrigin>(ray, tMax) : Any<MovedOrigin>(ray, tMax));
+
+    /// <summary>Nearest hit; <typeparamref name="TOrigin"/> says whether the box test needs <see cref="WideRay.Origins"/>' moved origins (compiled apart, so rays that move along every axis pay nothing for them).</summary>
     [SkipLocalsInit]
-    private protected override bool TraverseNearest(in Ray ray, ref double t, ref int primitive)
+    private bool Nearest<TOrigin>(in Ray ray, ref double t, ref int primitive)
+        where TOrigin : struct, IOrigin
     {
-        if (_wide.Length == 0)
-        {
-            return false;
-        }
-
         var r = new WideRay(ray);
-        ref var nodes = ref WideRoot;
+        var nodes = _wide;
         var leaves = _leaves;
         var groups = _groups;
         var lanes = new TriangleGroupSolver.RayLanes(ray);
@@ -126,8 +114,8 @@ public sealed class Bvh : AccelerationStructure
 
         while (true)
         {
-            ref var node = ref Unsafe.Add(ref nodes, current);
-            int mask = r.Hits(ref node, t, out var enter);
+            ref var node = ref nodes[current];
+            int mask = r.Hits<TOrigin>(ref node, t, out var enter);
 
             // A single interior child needs no trip through the stack.
             if (mask != 0 && (mask & (mask - 1)) == 0)
@@ -223,15 +211,11 @@ public sealed class Bvh : AccelerationStructure
     }
 
     [SkipLocalsInit]
-    private protected override bool TraverseAny(in Ray ray, double tMax)
+    private bool Any<TOrigin>(in Ray ray, double tMax)
+        where TOrigin : struct, IOrigin
     {
-        if (_wide.Length == 0)
-        {
-            return false;
-        }
-
         var r = new WideRay(ray);
-        ref var nodes = ref WideRoot;
+        var nodes = _wide;
         var leaves = _leaves;
         var groups = _groups;
         var lanes = new TriangleGroupSolver.RayLanes(ray);
@@ -271,8 +255,8 @@ public sealed class Bvh : AccelerationStructure
                 continue;
             }
 
-            ref var node = ref Unsafe.Add(ref nodes, reference);
-            int mask = r.Hits(ref node, tMax, out _);
+            ref var node = ref nodes[reference];
+            int mask = r.Hits<TOrigin>(ref node, tMax, out _);
             while (mask != 0)
             {
                 int lane = BitOperations.TrailingZeroCount(mask);
@@ -399,8 +383,8 @@ public sealed class Bvh : AccelerationStructure
         }
 
         int index = _wideCount++;
-        Span<float> minX = stackalloc float[4], minY = stackalloc float[4], minZ = stackalloc float[4];
-        Span<float> maxX = stackalloc float[4], maxY = stackalloc float[4], maxZ = stackalloc float[4];
+        Span<double> minX = stackalloc double[4], minY = stackalloc double[4], minZ = stackalloc double[4];
+        Span<double> maxX = stackalloc double[4], maxY = stackalloc double[4], maxZ = stackalloc double[4];
         Span<int> refs = stackalloc int[4];
         for (int i = 0; i < 4; i++)
         {
@@ -429,14 +413,14 @@ public sealed class Bvh : AccelerationStructure
             }
         }
 
-        Unsafe.Add(ref WideRoot, index) = new Bvh4Node
+        _wide[index] = new Bvh4Node
         {
-            MinX = Vector128.Create(minX[0], minX[1], minX[2], minX[3]),
-            MinY = Vector128.Create(minY[0], minY[1], minY[2], minY[3]),
-            MinZ = Vector128.Create(minZ[0], minZ[1], minZ[2], minZ[3]),
-            MaxX = Vector128.Create(maxX[0], maxX[1], maxX[2], maxX[3]),
-            MaxY = Vector128.Create(maxY[0], maxY[1], maxY[2], maxY[3]),
-            MaxZ = Vector128.Create(maxZ[0], maxZ[1], maxZ[2], maxZ[3]),
+            MinX = Vector256.Create(minX[0], minX[1], minX[2], minX[3]),
+            MinY = Vector256.Create(minY[0], minY[1], minY[2], minY[3]),
+            MinZ = Vector256.Create(minZ[0], minZ[1], minZ[2], minZ[3]),
+            MaxX = Vector256.Create(maxX[0], maxX[1], maxX[2], maxX[3]),
+            MaxY = Vector256.Create(maxY[0], maxY[1], maxY[2], maxY[3]),
+            MaxZ = Vector256.Create(maxZ[0], maxZ[1], maxZ[2], maxZ[3]),
             Child0 = refs[0],
             Child1 = refs[1],
             Child2 = refs[2],
@@ -446,63 +430,65 @@ public sealed class Bvh : AccelerationStructure
         return index;
     }
 
-    /// <summary>
-    /// Ray broadcast into vectors for testing four boxes at once. The single-precision planes are widened
-    /// to double (exactly) as they are loaded, so the test computes in double precision what it computed
-    /// when the nodes held doubles, bit for bit: the rays visit the same nodes in the same order.
-    /// </summary>
+    /// <summary>Whether <see cref="WideRay"/>'s test uses the moved origins (a compile-time constant for each type).</summary>
+    private interface IOrigin
+    {
+        static abstract bool Moved { get; }
+    }
+
+    private readonly struct SameOrigin : IOrigin
+    {
+        public static bool Moved => false;
+    }
+
+    private readonly struct MovedOrigin : IOrigin
+    {
+        public static bool Moved => true;
+    }
+
+    /// <summary>Ray broadcast into vectors for testing four boxes at once.</summary>
     private readonly struct WideRay
     {
         private readonly Vector256<double> _ox, _oy, _oz, _ix, _iy, _iz;
 
-        // The origin for the far planes: the origin, but moved off it on an axis the ray does not move along.
-        private readonly Vector256<double> _fx, _fy, _fz;
-
-        // Plane indices in a node (0–2 the minimum corner's x, y, z, 3–5 the maximum's): on each axis the ray
-        // enters a slab through the minimum plane when its direction is positive, else through the maximum.
-        private readonly int _nearX, _nearY, _nearZ;
+        // The origin for the maximum planes (_ox… for the minimum ones): the same but on an axis the ray does
+        // not move along, where it is moved off the plane the ray would leave through; see FarOrigin.
+        private readonly Vector256<double> _mx, _my, _mz;
 
         public WideRay(in Ray ray)
         {
-            _ox = Vector256.Create(ray.o.x);
-            _oy = Vector256.Create(ray.o.y);
-            _oz = Vector256.Create(ray.o.z);
-            _fx = Vector256.Create(FarOrigin(ray.o.x, ray.d.x));
-            _fy = Vector256.Create(FarOrigin(ray.o.y, ray.d.y));
-            _fz = Vector256.Create(FarOrigin(ray.o.z, ray.d.z));
-            double ix = Reciprocal(ray.d.x), iy = Reciprocal(ray.d.y), iz = Reciprocal(ray.d.z);
-            _ix = Vector256.Create(ix);
-            _iy = Vector256.Create(iy);
-            _iz = Vector256.Create(iz);
-            _nearX = ix < 0 ? 3 : 0;
-            _nearY = iy < 0 ? 4 : 1;
-            _nearZ = iz < 0 ? 5 : 2;
+            (_ox, _mx) = Origins(ray.o.x, ray.d.x);
+            (_oy, _my) = Origins(ray.o.y, ray.d.y);
+            (_oz, _mz) = Origins(ray.o.z, ray.d.z);
+            _ix = Vector256.Create(Reciprocal(ray.d.x));
+            _iy = Vector256.Create(Reciprocal(ray.d.y));
+            _iz = Vector256.Create(Reciprocal(ray.d.z));
         }
 
         /// <summary>
         /// Bit i set when the segment [0, tMax] meets child box i; <paramref name="enter"/> holds the entry distances.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public int Hits(ref Bvh4Node node, double tMax, out Vector256<double> enter)
+        public int Hits<TOrigin>(ref Bvh4Node node, double tMax, out Vector256<double> enter)
+            where TOrigin : struct, IOrigin
         {
-            // (plane − o) / d is monotonic in the plane for a fixed sign of 1/d (rounding is monotonic too), so
-            // the near plane's distance is the smaller of the two that a min/max pair would have picked.
-            ref var planes = ref Unsafe.As<Bvh4Node, Vector128<float>>(ref node);
-            Vector256<double> nx = (Widen(Unsafe.Add(ref planes, _nearX)) - _ox) * _ix, fx = (Widen(Unsafe.Add(ref planes, 3 - _nearX)) - _fx) * _ix;
-            Vector256<double> ny = (Widen(Unsafe.Add(ref planes, _nearY)) - _oy) * _iy, fy = (Widen(Unsafe.Add(ref planes, 5 - _nearY)) - _fy) * _iy;
-            Vector256<double> nz = (Widen(Unsafe.Add(ref planes, _nearZ)) - _oz) * _iz, fz = (Widen(Unsafe.Add(ref planes, 7 - _nearZ)) - _fz) * _iz;
+            var mx = TOrigin.Moved ? _mx : _ox;
+            var my = TOrigin.Moved ? _my : _oy;
+            var mz = TOrigin.Moved ? _mz : _oz;
+            Vector256<double> ax = (node.MinX - _ox) * _ix, bx = (node.MaxX - mx) * _ix;
+            Vector256<double> ay = (node.MinY - _oy) * _iy, by = (node.MaxY - my) * _iy;
+            Vector256<double> az = (node.MinZ - _oz) * _iz, bz = (node.MaxZ - mz) * _iz;
             // The native forms map to single instructions; they differ from Min/Max only for NaN
             // and signed zeros, and the finite reciprocals above never produce NaN.
-            var t0 = Vector256.MaxNative(Vector256.MaxNative(nx, ny), Vector256.MaxNative(nz, Vector256<double>.Zero));
-            var t1 = Vector256.MinNative(Vector256.MinNative(fx, fy), Vector256.MinNative(fz, Vector256.Create(tMax)));
+            var t0 = Vector256.MaxNative(
+                Vector256.MaxNative(Vector256.MinNative(ax, bx), Vector256.MinNative(ay, by)),
+                Vector256.MaxNative(Vector256.MinNative(az, bz), Vector256<double>.Zero));
+            var t1 = Vector256.MinNative(
+                Vector256.MinNative(Vector256.MaxNative(ax, bx), Vector256.MaxNative(ay, by)),
+                Vector256.MinNative(Vector256.MaxNative(az, bz), Vector256.Create(tMax)));
             enter = t0;
             return (int)Vector256.LessThanOrEqual(t0, t1 * FarSlackVector).ExtractMostSignificantBits() & node.ValidMask;
         }
-
-        /// <summary>The four floats as doubles (exact); one instruction with AVX, whose form can read memory directly.</summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static Vector256<double> Widen(Vector128<float> v) =>
-            Avx.IsSupported ? Avx.ConvertToVector256Double(v) : Vector256.WidenLower(v.ToVector256Unsafe());
 
         /// <summary>
         /// 1/d with zero mapped to a huge finite value of the same sign: 0 · huge is 0 rather than NaN,
@@ -510,15 +496,24 @@ public sealed class Bvh : AccelerationStructure
         /// </summary>
         private static double Reciprocal(double d) => d != 0 ? 1.0 / d : Math.CopySign(1e300, d);
 
+        /// <summary>Whether no direction component is zero (NaN counts as moving: it never was handled).</summary>
+        public static bool MovesAlongEveryAxis(in Ray ray) => ray.d.x != 0 && ray.d.y != 0 && ray.d.z != 0;
+
         /// <summary>
-        /// The origin coordinate the far plane's distance is measured from. A ray that does not move along an
-        /// axis is inside that slab for every t when its origin lies between the planes, but with the origin
-        /// on the far plane itself 0 · 1e300 made the far distance 0, and the box was missed (a ray along a
-        /// face of a cube, at its edge). Moved past the far plane's side by an ulp and 1e-150, the origin puts
-        /// the far plane at least 1e-150 ahead, so its distance is at least 1e150; the near plane still uses
-        /// the origin itself.
+        /// The origin coordinate the minimum and the maximum planes' distances are measured from: o for both,
+        /// unless the ray does not move along the axis. Such a ray is inside the slab for every t when o lies
+        /// between the planes, but with o on the plane it would leave through (the maximum for +0, the minimum
+        /// for −0) 0 · 1e300 made that distance 0, and the box was missed (a ray along a cube's face, at its
+        /// edge). For that plane the origin is moved back by an ulp and 1e-150, which puts the plane at least
+        /// 1e-150 ahead and its distance at 1e150 or more; the other plane keeps o.
         /// </summary>
-        private static double FarOrigin(double o, double d) =>
-            d != 0 ? o : double.IsNegative(d) ? Math.BitIncrement(o) + 1e-150 : Math.BitDecrement(o) - 1e-150;
+        private static (Vector256<double> Min, Vector256<double> Max) Origins(double o, double d)
+        {
+            if (d != 0)
+                return (Vector256.Create(o), Vector256.Create(o));
+            return double.IsNegative(d)
+                ? (Vector256.Create(Math.BitIncrement(o) + 1e-150), Vector256.Create(o))
+                : (Vector256.Create(o), Vector256.Create(Math.BitDecrement(o) - 1e-150));
+        }
     }
 }
