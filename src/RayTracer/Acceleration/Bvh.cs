@@ -451,8 +451,8 @@ public sealed class Bvh : AccelerationStructure
     {
         private readonly Vector256<double> _ox, _oy, _oz, _ix, _iy, _iz;
 
-        // The origin for the maximum planes (_ox… for the minimum ones): the same but on an axis the ray does
-        // not move along, where it is moved off the plane the ray would leave through; see FarOrigin.
+        // The origin the maximum planes' distances are measured from (_ox… serve the minimum planes): both are
+        // the ray's origin except on an axis the ray does not move along, where one is moved; see Origins.
         private readonly Vector256<double> _mx, _my, _mz;
 
         public WideRay(in Ray ray)
