@@ -23,8 +23,11 @@ public sealed class Bvh : AccelerationStructure
     // Each wide level pushes at most three entries beyond the one it pops.
     private const int StackSize = 3 * MaxDepth + 8;
 
-    // Rounding slack on far slab distances (pbrt's 1 + 2γ₃) so no ray slips between adjacent boxes.
-    private const double FarSlack = 1.0 + 6.0 * 1.1102230246251565e-16;
+    // Slack on far slab distances and on the best distance a subtree's entry is compared with: 1 + 2⁻²⁰.
+    // The box test rounds (pbrt's 1 + 2γ₃ would cover that), and so does the triangle test: the distance it
+    // computes for a hit on a box face can lie a few units in the last place below the box's computed
+    // entry (seen at coordinates near 1e30 and 1e-30), and a node must not be skipped for that.
+    private const double FarSlack = 1.0 + 1.0 / (1 << 20);
 
     // Slack for the far distance of the vector slab test; see WideRay.
     private static readonly Vector256<double> FarSlackVector = Vector256.Create(FarSlack);
@@ -84,14 +87,19 @@ public sealed class Bvh : AccelerationStructure
     /// <summary>Nodes of the four-wide tree used for traversal.</summary>
     public int NodeCount => _wideCount;
 
-    [SkipLocalsInit]
-    private protected override bool TraverseNearest(in Ray ray, ref double t, ref int primitive)
-    {
-        if (_wide.Length == 0)
-        {
-            return false;
-        }
+    private protected override bool TraverseNearest(in Ray ray, ref double t, ref int primitive) =>
+        _wide.Length != 0 && (WideRay.MovesAlongEveryAxis(ray)
+            ? Nearest<SameOrigin>(ray, ref t, ref primitive)
+            : Nearest<MovedOrigin>(ray, ref t, ref primitive));
 
+    private protected override bool TraverseAny(in Ray ray, double tMax) =>
+        _wide.Length != 0 && (WideRay.MovesAlongEveryAxis(ray) ? Any<SameOrigin>(ray, tMax) : Any<MovedOrigin>(ray, tMax));
+
+    /// <summary>Nearest hit; <typeparamref name="TOrigin"/> says whether the box test needs <see cref="WideRay.Origins"/>' moved origins (compiled apart, so rays that move along every axis pay nothing for them).</summary>
+    [SkipLocalsInit]
+    private bool Nearest<TOrigin>(in Ray ray, ref double t, ref int primitive)
+        where TOrigin : struct, IOrigin
+    {
         var r = new WideRay(ray);
         var nodes = _wide;
         var leaves = _leaves;
@@ -107,7 +115,7 @@ public sealed class Bvh : AccelerationStructure
         while (true)
         {
             ref var node = ref nodes[current];
-            int mask = r.Hits(ref node, t, out var enter);
+            int mask = r.Hits<TOrigin>(ref node, t, out var enter);
 
             // A single interior child needs no trip through the stack.
             if (mask != 0 && (mask & (mask - 1)) == 0)
@@ -150,7 +158,7 @@ public sealed class Bvh : AccelerationStructure
                 }
 
                 sp--;
-                if (stackEnter[sp] > t)
+                if (stackEnter[sp] > t * FarSlack)
                 {
                     continue;
                 }
@@ -203,13 +211,9 @@ public sealed class Bvh : AccelerationStructure
     }
 
     [SkipLocalsInit]
-    private protected override bool TraverseAny(in Ray ray, double tMax)
+    private bool Any<TOrigin>(in Ray ray, double tMax)
+        where TOrigin : struct, IOrigin
     {
-        if (_wide.Length == 0)
-        {
-            return false;
-        }
-
         var r = new WideRay(ray);
         var nodes = _wide;
         var leaves = _leaves;
@@ -252,7 +256,7 @@ public sealed class Bvh : AccelerationStructure
             }
 
             ref var node = ref nodes[reference];
-            int mask = r.Hits(ref node, tMax, out _);
+            int mask = r.Hits<TOrigin>(ref node, tMax, out _);
             while (mask != 0)
             {
                 int lane = BitOperations.TrailingZeroCount(mask);
@@ -426,16 +430,36 @@ public sealed class Bvh : AccelerationStructure
         return index;
     }
 
+    /// <summary>Whether <see cref="WideRay"/>'s test uses the moved origins (a compile-time constant for each type).</summary>
+    private interface IOrigin
+    {
+        static abstract bool Moved { get; }
+    }
+
+    private readonly struct SameOrigin : IOrigin
+    {
+        public static bool Moved => false;
+    }
+
+    private readonly struct MovedOrigin : IOrigin
+    {
+        public static bool Moved => true;
+    }
+
     /// <summary>Ray broadcast into vectors for testing four boxes at once.</summary>
     private readonly struct WideRay
     {
         private readonly Vector256<double> _ox, _oy, _oz, _ix, _iy, _iz;
 
+        // The origin the maximum planes' distances are measured from (_ox… serve the minimum planes): both are
+        // the ray's origin except on an axis the ray does not move along, where one is moved; see Origins.
+        private readonly Vector256<double> _mx, _my, _mz;
+
         public WideRay(in Ray ray)
         {
-            _ox = Vector256.Create(ray.o.x);
-            _oy = Vector256.Create(ray.o.y);
-            _oz = Vector256.Create(ray.o.z);
+            (_ox, _mx) = Origins(ray.o.x, ray.d.x);
+            (_oy, _my) = Origins(ray.o.y, ray.d.y);
+            (_oz, _mz) = Origins(ray.o.z, ray.d.z);
             _ix = Vector256.Create(Reciprocal(ray.d.x));
             _iy = Vector256.Create(Reciprocal(ray.d.y));
             _iz = Vector256.Create(Reciprocal(ray.d.z));
@@ -445,11 +469,15 @@ public sealed class Bvh : AccelerationStructure
         /// Bit i set when the segment [0, tMax] meets child box i; <paramref name="enter"/> holds the entry distances.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public int Hits(ref Bvh4Node node, double tMax, out Vector256<double> enter)
+        public int Hits<TOrigin>(ref Bvh4Node node, double tMax, out Vector256<double> enter)
+            where TOrigin : struct, IOrigin
         {
-            Vector256<double> ax = (node.MinX - _ox) * _ix, bx = (node.MaxX - _ox) * _ix;
-            Vector256<double> ay = (node.MinY - _oy) * _iy, by = (node.MaxY - _oy) * _iy;
-            Vector256<double> az = (node.MinZ - _oz) * _iz, bz = (node.MaxZ - _oz) * _iz;
+            var mx = TOrigin.Moved ? _mx : _ox;
+            var my = TOrigin.Moved ? _my : _oy;
+            var mz = TOrigin.Moved ? _mz : _oz;
+            Vector256<double> ax = (node.MinX - _ox) * _ix, bx = (node.MaxX - mx) * _ix;
+            Vector256<double> ay = (node.MinY - _oy) * _iy, by = (node.MaxY - my) * _iy;
+            Vector256<double> az = (node.MinZ - _oz) * _iz, bz = (node.MaxZ - mz) * _iz;
             // The native forms map to single instructions; they differ from Min/Max only for NaN
             // and signed zeros, and the finite reciprocals above never produce NaN.
             var t0 = Vector256.MaxNative(
@@ -467,5 +495,25 @@ public sealed class Bvh : AccelerationStructure
         /// so a ray lying in a slab plane counts as inside that slab.
         /// </summary>
         private static double Reciprocal(double d) => d != 0 ? 1.0 / d : Math.CopySign(1e300, d);
+
+        /// <summary>Whether no direction component is zero (NaN counts as moving: it never was handled).</summary>
+        public static bool MovesAlongEveryAxis(in Ray ray) => ray.d.x != 0 && ray.d.y != 0 && ray.d.z != 0;
+
+        /// <summary>
+        /// The origin coordinate the minimum and the maximum planes' distances are measured from: o for both,
+        /// unless the ray does not move along the axis. Such a ray is inside the slab for every t when o lies
+        /// between the planes, but with o on the plane it would leave through (the maximum for +0, the minimum
+        /// for −0) 0 · 1e300 made that distance 0, and the box was missed (a ray along a cube's face, at its
+        /// edge). For that plane the origin is moved back by an ulp and 1e-150, which puts the plane at least
+        /// 1e-150 ahead and its distance at 1e150 or more; the other plane keeps o.
+        /// </summary>
+        private static (Vector256<double> Min, Vector256<double> Max) Origins(double o, double d)
+        {
+            if (d != 0)
+                return (Vector256.Create(o), Vector256.Create(o));
+            return double.IsNegative(d)
+                ? (Vector256.Create(Math.BitIncrement(o) + 1e-150), Vector256.Create(o))
+                : (Vector256.Create(o), Vector256.Create(Math.BitDecrement(o) - 1e-150));
+        }
     }
 }
