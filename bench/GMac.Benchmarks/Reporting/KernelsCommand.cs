@@ -11,7 +11,7 @@ namespace GMac.Benchmarks.Reporting;
 /// <c>kernels NAME…</c>: the report's scalar figures for a few kernels only (operations of the
 /// generated and hand code, the paired generated / hand time ratio, the accuracy families), in
 /// seconds rather than the full report's minutes, for checking a change of the generator.
-/// <c>kernels --ratio [--hand-first] NAME…</c> prints only the paired ratios, one machine-readable
+/// <c>--hand-first</c> runs (and compiles) the hand code first; <c>--ratio</c> prints only the paired ratios, one machine-readable
 /// line per kernel (<see cref="RatioLine"/>): the report runs it in fresh processes.
 /// </summary>
 public static class KernelsCommand
@@ -35,7 +35,7 @@ public static class KernelsCommand
         args = args.Where(a => a is not ("--ratio" or "--hand-first")).ToArray();
         if (args.Count == 0 || args.Any(a => !KernelCatalog.Names.Contains(a)))
         {
-            error.WriteLine($"usage: GMac.Benchmarks kernels [--ratio [--hand-first]] NAME... (known: {string.Join(", ", KernelCatalog.Names)})");
+            error.WriteLine($"usage: GMac.Benchmarks kernels [--ratio] [--hand-first] NAME... (known: {string.Join(", ", KernelCatalog.Names)})");
             return 2;
         }
         if (ratioOnly) return RatiosOnly(args, handFirst, output);
@@ -48,10 +48,7 @@ public static class KernelsCommand
                          $"paired ratio: median of {Pairs} pairs of {SliceMs} ms slices");
         foreach (var name in args)
         {
-            var kernel = KernelCatalog.Create(name);
-            kernel.Setup(GaApplicationBenchmarks.BatchSize, GaApplicationBenchmarks.Seed);
-            KernelAgreement.Verify(kernel);
-            var (ratio, generatedNs, handNs) = paired.Pair(kernel.Count, () => kernel.Time(Variant.Generated), () => kernel.Time(Variant.Hand));
+            var (kernel, ratio, generatedNs, handNs) = TimeInPairs(name, paired, handFirst);
             output.WriteLine($"{name}: ops generated {counter.Count(kernel)}, hand {kernel.HandOperations}");
             output.WriteLine($"  time generated {generatedNs:0.00} ns, hand {handNs:0.00} ns, paired ratio {ratio:0.000}");
             foreach (var row in harness.Measure(kernel))
@@ -70,17 +67,25 @@ public static class KernelsCommand
         var paired = new PairedRatioTimer(RatioPairs, TimeSpan.FromMilliseconds(SliceMs), WarmUpSlice);
         foreach (var name in names)
         {
-            var kernel = KernelCatalog.Create(name);
-            kernel.Setup(GaApplicationBenchmarks.BatchSize, GaApplicationBenchmarks.Seed);
-            KernelAgreement.Verify(kernel);
-            void Generated() => kernel.Time(Variant.Generated);
-            void Hand() => kernel.Time(Variant.Hand);
-            var (ratio, generatedNs, handNs) = handFirst
-                ? Invert(paired.Pair(kernel.Count, Hand, Generated))
-                : paired.Pair(kernel.Count, Generated, Hand);
+            var (_, ratio, generatedNs, handNs) = TimeInPairs(name, paired, handFirst);
             output.WriteLine(FormattableString.Invariant($"{RatioLine} {name} {ratio:R} {generatedNs:R} {handNs:R}"));
         }
         return 0;
+    }
+
+    /// <summary>
+    /// The kernel set up and checked against its other variants, then its generated / hand ratio and
+    /// the two times per item, timed in pairs (the hand code run, and so compiled, first if asked).
+    /// </summary>
+    private static (IGaKernel Kernel, double Ratio, double GeneratedNs, double HandNs) TimeInPairs(string name, PairedRatioTimer paired, bool handFirst)
+    {
+        var kernel = KernelCatalog.Create(name);
+        kernel.Setup(GaApplicationBenchmarks.BatchSize, GaApplicationBenchmarks.Seed);
+        KernelAgreement.Verify(kernel);
+        void Generated() => kernel.Time(Variant.Generated);
+        void Hand() => kernel.Time(Variant.Hand);
+        var (ratio, generatedNs, handNs) = handFirst ? Invert(paired.Pair(kernel.Count, Hand, Generated)) : paired.Pair(kernel.Count, Generated, Hand);
+        return (kernel, ratio, generatedNs, handNs);
     }
 
     /// <summary>Hand / generated figures as generated / hand: the median of the inverses is the inverse of the median (odd count).</summary>

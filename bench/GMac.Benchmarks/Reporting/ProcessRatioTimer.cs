@@ -1,5 +1,6 @@
 using System.Diagnostics;
 using System.Globalization;
+using GMac.Benchmarks.Generation;
 
 namespace GMac.Benchmarks.Reporting;
 
@@ -16,11 +17,8 @@ public sealed class ProcessRatioTimer(int processes)
 {
     public (double Median, double Min, double Max) GeneratedOverHand(string kernel)
     {
-        var ratios = new double[processes];
-        for (var p = 0; p < processes; p++) ratios[p] = RunOnce(kernel, handFirst: p % 2 == 1);
-        Array.Sort(ratios);
-        var median = processes % 2 == 1 ? ratios[processes / 2] : (ratios[processes / 2 - 1] + ratios[processes / 2]) / 2;
-        return (median, ratios[0], ratios[^1]);
+        var ratios = Enumerable.Range(0, processes).Select(p => RunOnce(kernel, handFirst: p % 2 == 1)).ToList();
+        return (GenerationTimer.Median(ratios), ratios.Min(), ratios.Max());
     }
 
     /// <summary>The dotnet host: the one running this process where that is it (dotnet run, dotnet test), else the one on the path.</summary>
