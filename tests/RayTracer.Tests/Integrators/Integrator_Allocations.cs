@@ -27,11 +27,18 @@ public class Integrator_Allocations
         var ray = new Ray(new Point3D(0.1, 0.2, 1), new Vector3D(0.01, 0, -1));
         var first = tracer.TraceRay(ray, 0);
 
-        var before = GC.GetAllocatedBytesForCurrentThread();
+        // The runtime itself may allocate on this thread while the JIT replaces the first code of the
+        // loop (a few kilobytes, once, seen under load): rounds of 1000 rays until one allocates
+        // nothing. An allocation per ray would show in every round.
         var last = RGBColor.Black;
-        for (var i = 0; i < 1000; i++)
-            last = tracer.TraceRay(ray, 0);
-        var allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+        long allocated = -1;
+        for (var round = 0; round < 5 && allocated != 0; round++)
+        {
+            var before = GC.GetAllocatedBytesForCurrentThread();
+            for (var i = 0; i < 1000; i++)
+                last = tracer.TraceRay(ray, 0);
+            allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+        }
 
         Assert.Equal(0, allocated);
         Assert.Equal(first, last);
