@@ -41,8 +41,8 @@ public sealed class Circ3Kernel : GaKernel<Vec3, Vec3>
         //GMac.Bind("v.e2", "<v.y>");
         //GMac.Bind("v.e3", "<v.z>");
         double tmp1 = p.y;
-        double tmp2 = p.z;
         double tmp0 = 4.0 * (tmp1 * tmp1 + p.x * p.x - 1.0);
+        double tmp2 = p.z;
         v.x = p.x * tmp0;
         v.y = tmp1 * tmp0;
         v.z = 2.0 * tmp2;

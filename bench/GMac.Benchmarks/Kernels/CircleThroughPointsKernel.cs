@@ -60,10 +60,10 @@ public sealed class CircleThroughPointsKernel : GaKernel<Vec3Triple, ConformalCi
         //GMac.Bind("phi.e1^e3^ni", "<c.E13Ni>");
         //GMac.Bind("phi.e2^e3^ni", "<c.E23Ni>");
         double tmp15 = x.A.x;
-        double tmp16 = x.A.y;
-        double tmp17 = x.A.z;
         double tmp0 = tmp15 - x.C.x;
+        double tmp16 = x.A.y;
         double tmp1 = tmp16 - x.C.y;
+        double tmp17 = x.A.z;
         double tmp2 = tmp17 - x.C.z;
         double tmp3 = -0.5 * (tmp0 * (tmp15 + x.C.x) + tmp1 * (tmp16 + x.C.y) + tmp2 * (tmp17 + x.C.z));
         double tmp4 = tmp15 - x.B.x;

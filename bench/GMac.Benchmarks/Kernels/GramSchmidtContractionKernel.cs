@@ -49,8 +49,8 @@ public sealed class GramSchmidtContractionKernel : GaKernel<Vec3Triple, Vec3Trip
         //GMac.Bind("w3", "Vector3D", "w.C");
         double tmp4 = v.A.x;
         double tmp5 = v.A.y;
-        double tmp6 = v.A.z;
         double tmp0 = tmp5 * v.B.x - tmp4 * v.B.y;
+        double tmp6 = v.A.z;
         double tmp1 = tmp4 * v.B.z - tmp6 * v.B.x;
         double tmp2 = tmp6 * v.B.y - tmp5 * v.B.z;
         double tmp3 = -(tmp0 * v.C.z) - tmp2 * v.C.x - tmp1 * v.C.y;

@@ -47,9 +47,9 @@ public sealed class JuliaStep3Kernel : GaKernel<Vec2Pair, Vec2>
         //GMac.Bind("y.e1", "<y.x>");
         //GMac.Bind("y.e2", "<y.y>");
         double tmp2 = j.X.y;
-        double tmp3 = j.C.y;
         double tmp0 = tmp2 * tmp2;
         double tmp1 = j.X.x * j.X.x;
+        double tmp3 = j.C.y;
         y.x = j.X.x * (tmp1 - 3.0 * tmp0) + j.C.x;
         y.y = tmp2 * (3.0 * tmp1 - tmp0) + tmp3;
         #endregion

@@ -47,11 +47,11 @@ public sealed class JuliaStep5Kernel : GaKernel<Vec2Pair, Vec2>
         //GMac.Bind("y.e1", "<y.x>");
         //GMac.Bind("y.e2", "<y.y>");
         double tmp4 = j.X.y;
-        double tmp5 = j.C.y;
         double tmp0 = tmp4 * tmp4;
         double tmp1 = 10.0 * tmp0;
         double tmp2 = j.X.x * j.X.x;
         double tmp3 = tmp0 * tmp0;
+        double tmp5 = j.C.y;
         y.x = j.X.x * ((tmp2 - tmp1) * tmp2 + 5.0 * tmp3) + j.C.x;
         y.y = tmp4 * ((5.0 * tmp2 - tmp1) * tmp2 + tmp3) + tmp5;
         #endregion

@@ -53,8 +53,8 @@ public sealed class SkewLinesClosestPointsKernel : GaKernel<LinePair, LineParame
         //GMac.Bind("t2.1", "<t.T2>");
         double tmp10 = l.D1.x;
         double tmp11 = l.D1.y;
-        double tmp12 = l.D1.z;
         double tmp0 = l.D2.y * tmp10 - tmp11 * l.D2.x;
+        double tmp12 = l.D1.z;
         double tmp1 = l.D2.z * tmp10 - tmp12 * l.D2.x;
         double tmp2 = l.D2.z * tmp11 - l.D2.y * tmp12;
         double tmp3 = 1.0 / (tmp0 * tmp0 + tmp1 * tmp1 + tmp2 * tmp2);

@@ -55,10 +55,10 @@ public sealed class SphereThroughPointsKernel : GaKernel<Vec3Quad, DualSphere>
         //GMac.Bind("omega.e3", "<s.E3>");
         //GMac.Bind("omega.ni", "<s.Ni>");
         double tmp22 = q.P1.x;
-        double tmp23 = q.P1.y;
-        double tmp24 = q.P1.z;
         double tmp0 = q.P4.x - tmp22;
+        double tmp23 = q.P1.y;
         double tmp1 = tmp23 - q.P4.y;
+        double tmp24 = q.P1.z;
         double tmp2 = tmp24 - q.P4.z;
         double tmp3 = 0.5 * (tmp0 * (tmp22 + q.P4.x) - tmp1 * (tmp23 + q.P4.y) - tmp2 * (q.P4.z + tmp24));
         double tmp4 = q.P3.x - tmp22;

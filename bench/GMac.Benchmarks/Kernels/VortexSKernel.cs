@@ -53,8 +53,8 @@ public sealed class VortexSKernel : GaKernel<VortexInput, Vec3>
         double tmp4 = x.A.x;
         double tmp5 = x.A.y;
         double tmp6 = x.A.z;
-        double tmp7 = x.Gamma;
         double tmp0 = x.Omega * (tmp6 * tmp3 + tmp5 * tmp2 + tmp4 * tmp1) / (tmp4 * tmp4 + tmp5 * tmp5 + tmp6 * tmp6);
+        double tmp7 = x.Gamma;
         v.x = tmp4 * tmp0 + tmp7 * (tmp3 * tmp5 - tmp2 * tmp6);
         v.y = tmp5 * tmp0 + tmp7 * (tmp1 * tmp6 - tmp3 * tmp4);
         v.z = tmp6 * tmp0 + tmp7 * (tmp2 * tmp4 - tmp1 * tmp5);

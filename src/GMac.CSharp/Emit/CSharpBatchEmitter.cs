@@ -158,12 +158,15 @@ internal static class CSharpBatchEmitter
             Line(indent, "}");
             Line(indent, $"for (; {index} < {count}; {index}++)");
         }
+        // The common values are locals of this code: no output of the tail can overwrite them.
+        var mayOverwrite = options.MayOverwrite;
         var (tailTop, tailBody) = CSharpScalarEmitter.Instance.EmitParts(tailBlock, options with
         {
             ScalarType = element,
             Indent = inner,
             IncludeStatistics = false,
             IsNameTaken = IsTaken,
+            MayOverwrite = mayOverwrite is null ? null : (output, input) => !commonNames.ContainsKey(input) && mayOverwrite(output, input),
         });
         Line(indent, "{");
         foreach (var t in tailTop) Line(inner, t);

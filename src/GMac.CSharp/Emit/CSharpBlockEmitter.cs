@@ -58,17 +58,24 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
             .SelectMany(text => IdentifierLike().Matches(text).Select(m => m.Value.TrimStart('@')))
             .ToHashSet(StringComparer.Ordinal);
         bool IsFree(string name) => !bound.Contains(name) && !options.IsNameTaken(name);
-        var held = HeldOutputs(block, options.MayOverwrite);
+        var mayOverwrite = options.MayOverwrite ?? SharesRootName(block);
+        var held = HeldOutputs(block, mayOverwrite);
         // Either the outputs that may overwrite inputs still to be read are held to the end, or
-        // those inputs are read into locals first and every output is written where it is
-        // computed. The second is measured faster (the line through two points 1.15 of hand with
-        // its stores all at the end, 1.0 in place, the instructions otherwise the same). Across a math call
+        // those inputs are read into locals and every output is written once the inputs it may
+        // overwrite have been read (OutputPlacement). The second is measured faster (the line
+        // through two points 1.15 of hand with its stores all at the end, 0.97 so). Across a math call
         // locals are spilled (every vector register is caller-saved on the System V ABI): code
         // that calls takes the copies only where they are no more locals than the held outputs.
-        var copied = CopiedInputs(block, options.MayOverwrite);
+        var order = OutputPlacement.Order(block, mayOverwrite);
+        var copied = CopiedInputs(block, order, mayOverwrite);
         var calls = block.Statements.SelectMany(st => st.Expressions).Any(e => e.DescendantsAndSelf().Any(n => n is CallExpr));
-        if (copied.Count > 0 && (!calls || copied.Count <= held.Count)) held.Clear();
-        else copied.Clear();
+        if (held.Count > 0 && (!calls || copied.Count <= held.Count)) held.Clear();
+        else if (held.Count > 0)
+        {
+            copied.Clear();
+            order = [.. block.Statements];
+        }
+        var copyPoints = OutputPlacement.CopyPoints(block, order, copied, mayOverwrite);
         // A held output whose value is a temporary assigned once (or a literal) needs no holder of
         // its own: the temporary keeps the value, and the output is written from it (negated) at the end.
         var assignedOnce = block.Temporaries.GroupBy(t => t.Target, StringComparer.Ordinal).Where(g => g.Count() == 1)
@@ -118,10 +125,11 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
         var declared = new HashSet<string>(StringComparer.Ordinal);
         var sinCos = new SinCosPairs(block);
         var line = new StringBuilder();
-        foreach (var input in copied)
-            body.Append(options.Indent).Append(declaredType).Append(' ').Append(copyName[input]).Append(" = ").Append(InputText(block.InputText[input])).Append(';').Append(options.NewLine);
-        foreach (var s in block.Statements)
+        for (var index = 0; index < order.Count; index++)
         {
+            var s = order[index];
+            foreach (var input in copyPoints.GetValueOrDefault(index) ?? [])
+                body.Append(options.Indent).Append(declaredType).Append(' ').Append(copyName[input]).Append(" = ").Append(InputText(block.InputText[input])).Append(';').Append(options.NewLine);
             if (sinCos.IsDropped(s))
                 continue;
             line.Clear();
@@ -213,14 +221,14 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
     /// <paramref name="mayOverwrite"/> decides for an output and an input; without it, the names in
     /// their texts do.
     /// </summary>
-    private static HashSet<AssignmentStatement> HeldOutputs(CodeBlock block, Func<string, string, bool>? mayOverwrite)
+    private static HashSet<AssignmentStatement> HeldOutputs(CodeBlock block, Func<string, string, bool> mayOverwrite)
     {
         var held = new HashSet<AssignmentStatement>(ReferenceEqualityComparer.Instance);
         var readLater = new HashSet<string>(StringComparer.Ordinal);
         for (var i = block.Statements.Count - 1; i >= 0; i--)
         {
             var s = block.Statements[i];
-            if (s is AssignmentStatement { IsOutput: true } o && readLater.Any(input => (mayOverwrite ?? SharesRootName(block))(o.Target, input)))
+            if (s is AssignmentStatement { IsOutput: true } o && readLater.Any(input => mayOverwrite(o.Target, input)))
                 held.Add(o);
             foreach (var e in s.Expressions)
             foreach (var v in e.DescendantsAndSelf().OfType<VariableExpr>())
@@ -231,18 +239,18 @@ public abstract partial class CSharpBlockEmitter : ICodeEmitter
     }
 
     /// <summary>
-    /// The inputs that some output may overwrite before a later statement reads them, in the
-    /// block's input order: read into locals first, they let every output be written in place.
+    /// The inputs that some output may overwrite before a later statement of <paramref name="order"/>
+    /// reads them, in the block's input order: read into locals, they let every output be written in place.
     /// </summary>
-    private static List<string> CopiedInputs(CodeBlock block, Func<string, string, bool>? mayOverwrite)
+    private static List<string> CopiedInputs(CodeBlock block, IReadOnlyList<CodeStatement> order, Func<string, string, bool> mayOverwrite)
     {
         var copied = new HashSet<string>(StringComparer.Ordinal);
         var readLater = new HashSet<string>(StringComparer.Ordinal);
-        for (var i = block.Statements.Count - 1; i >= 0; i--)
+        for (var i = order.Count - 1; i >= 0; i--)
         {
-            var s = block.Statements[i];
+            var s = order[i];
             if (s is AssignmentStatement { IsOutput: true } o)
-                copied.UnionWith(readLater.Where(input => (mayOverwrite ?? SharesRootName(block))(o.Target, input)));
+                copied.UnionWith(readLater.Where(input => mayOverwrite(o.Target, input)));
             foreach (var e in s.Expressions)
             foreach (var v in e.DescendantsAndSelf().OfType<VariableExpr>())
                 if (block.InputText.ContainsKey(v.Name))

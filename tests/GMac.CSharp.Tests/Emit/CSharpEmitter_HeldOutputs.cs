@@ -6,9 +6,9 @@ namespace GMac.CSharp.Tests.Emit;
 
 /// <summary>
 /// Outputs whose targets may be inputs read after them (here all of <c>v</c>) either wait until
-/// the last read, or the inputs read after them are read into locals first and every output is
-/// written where it is computed: the second, except in code that calls math functions where it
-/// takes more locals. A held output whose value a temporary already holds is written from that
+/// the last read, or the inputs read after them are read into locals where first needed and every
+/// output is written once the inputs it may overwrite have been read: the second, except in code
+/// that calls math functions where it takes more locals. A held output whose value a temporary already holds is written from that
 /// temporary: a second local holding a copy is code the hand writer would not write.
 /// </summary>
 public class CSharpEmitter_HeldOutputs
@@ -48,8 +48,8 @@ public class CSharpEmitter_HeldOutputs
         Assert.Equal(
             "double tmp1 = v.a;\n" +
             "double tmp2 = v.b;\n" +
-            "double tmp3 = v.c;\n" +
             "double tmp0 = tmp2 - tmp1;\n" +
+            "double tmp3 = v.c;\n" +
             "v.x = tmp0;\n" +
             "v.y = -tmp0;\n" +
             "v.z = tmp0 * tmp1 * tmp2 * tmp3;\n", code);
@@ -69,5 +69,28 @@ public class CSharpEmitter_HeldOutputs
             "v.x = tmp0;\n" +
             "v.y = tmp0 * tmp1;\n" +
             "v.z = tmp0 * tmp2;\n", code);
+    }
+
+    [Fact]
+    public void An_output_waits_until_the_inputs_it_may_overwrite_have_been_read_and_only_inputs_read_after_it_are_copied()
+    {
+        // the line through two points: its direction first, then the moments, which read p again
+        var inputs = new Dictionary<string, string> { ["px"] = "v.px", ["py"] = "v.py", ["qx"] = "v.qx", ["qy"] = "v.qy" };
+        var targets = new Dictionary<string, string> { ["dx"] = "v.dx", ["dy"] = "v.dy", ["m"] = "v.m" };
+        var block = new CodeBlock([
+            new AssignmentStatement("ex", ExprFactory.Difference(Variable("qx"), Variable("px")), false),
+            new AssignmentStatement("dx", Variable("ex"), true),
+            new AssignmentStatement("ey", ExprFactory.Difference(Variable("qy"), Variable("py")), false),
+            new AssignmentStatement("dy", Variable("ey"), true),
+            new AssignmentStatement("m", ExprFactory.Difference(Product(Variable("ey"), Variable("px")), Product(Variable("ex"), Variable("py"))), true),
+        ], inputs, targets);
+        Assert.Equal(
+            "double tmp2 = v.px;\n" +
+            "double tmp0 = v.qx - tmp2;\n" +
+            "double tmp3 = v.py;\n" +
+            "double tmp1 = v.qy - tmp3;\n" +
+            "v.dx = tmp0;\n" +
+            "v.dy = tmp1;\n" +
+            "v.m = tmp1 * tmp2 - tmp0 * tmp3;\n", CSharpEmitter.Emit(block));
     }
 }
