@@ -50,29 +50,29 @@ public sealed class GramSchmidtRejectionKernel : GaKernel<Vec3Triple, Vec3Triple
         //GMac.Bind("w1", "Vector3D", "w.A");
         //GMac.Bind("w2", "Vector3D", "w.B");
         //GMac.Bind("w3", "Vector3D", "w.C");
-        double tmp8 = v.A.x;
         double tmp9 = v.A.y;
-        double tmp10 = v.A.z;
-        double tmp11 = v.B.x;
         double tmp12 = v.B.y;
+        double tmp0 = tmp12 - tmp9;
+        double tmp8 = v.A.x;
+        double tmp11 = v.B.x;
+        double tmp1 = tmp11 - tmp8;
+        double tmp2 = tmp0 * tmp8 - tmp1 * tmp9;
+        double tmp10 = v.A.z;
         double tmp13 = v.B.z;
-        double tmp0 = (tmp8 * tmp11 + tmp9 * tmp12 + tmp10 * tmp13) / (tmp10 * tmp10 + tmp8 * tmp8 + tmp9 * tmp9);
-        double tmp1 = tmp12 - tmp9;
-        double tmp2 = tmp11 - tmp8;
-        double tmp3 = tmp1 * tmp8 - tmp2 * tmp9;
-        double tmp4 = tmp13 - tmp10;
-        double tmp5 = tmp2 * tmp10 - tmp4 * tmp8;
-        double tmp6 = tmp4 * tmp9 - tmp1 * tmp10;
-        double tmp7 = (v.C.y * tmp5 + v.C.x * tmp6 + v.C.z * tmp3) / (tmp3 * tmp3 + tmp5 * tmp5 + tmp6 * tmp6);
+        double tmp3 = tmp13 - tmp10;
+        double tmp4 = tmp1 * tmp10 - tmp3 * tmp8;
+        double tmp5 = tmp3 * tmp9 - tmp0 * tmp10;
+        double tmp6 = (tmp8 * tmp11 + tmp9 * tmp12 + tmp10 * tmp13) / (tmp10 * tmp10 + tmp8 * tmp8 + tmp9 * tmp9);
+        double tmp7 = (v.C.y * tmp4 + v.C.x * tmp5 + v.C.z * tmp2) / (tmp2 * tmp2 + tmp4 * tmp4 + tmp5 * tmp5);
         w.A.x = tmp8;
         w.A.y = tmp9;
         w.A.z = tmp10;
-        w.B.x = tmp11 - tmp8 * tmp0;
-        w.B.y = tmp12 - tmp9 * tmp0;
-        w.B.z = tmp13 - tmp10 * tmp0;
-        w.C.x = tmp6 * tmp7;
-        w.C.y = tmp5 * tmp7;
-        w.C.z = tmp3 * tmp7;
+        w.B.x = tmp11 - tmp8 * tmp6;
+        w.B.y = tmp12 - tmp9 * tmp6;
+        w.B.z = tmp13 - tmp10 * tmp6;
+        w.C.x = tmp5 * tmp7;
+        w.C.y = tmp4 * tmp7;
+        w.C.z = tmp2 * tmp7;
         #endregion
     }
 

@@ -57,15 +57,15 @@ public sealed class SkewLinesClosestPointsKernel : GaKernel<LinePair, LineParame
         double tmp12 = l.D1.z;
         double tmp1 = l.D2.z * tmp10 - tmp12 * l.D2.x;
         double tmp2 = l.D2.z * tmp11 - l.D2.y * tmp12;
-        double tmp3 = 1.0 / (tmp0 * tmp0 + tmp1 * tmp1 + tmp2 * tmp2);
+        double tmp3 = tmp0 * tmp0 + tmp1 * tmp1 + tmp2 * tmp2;
         double tmp4 = l.P2.x - l.P1.x;
         double tmp5 = l.P2.y - l.P1.y;
         double tmp6 = l.P2.z - l.P1.z;
         double tmp7 = tmp4 * tmp0 - tmp2 * tmp6;
         double tmp8 = tmp6 * tmp1 + tmp5 * tmp0;
         double tmp9 = tmp2 * tmp5 + tmp4 * tmp1;
-        t.T1 = tmp3 * (l.D2.y * tmp7 + l.D2.z * tmp9 - l.D2.x * tmp8);
-        t.T2 = tmp3 * (tmp11 * tmp7 + tmp12 * tmp9 - tmp10 * tmp8);
+        t.T1 = (l.D2.y * tmp7 + l.D2.z * tmp9 - l.D2.x * tmp8) / tmp3;
+        t.T2 = (tmp11 * tmp7 + tmp12 * tmp9 - tmp10 * tmp8) / tmp3;
         #endregion
     }
 

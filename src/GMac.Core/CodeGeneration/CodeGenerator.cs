@@ -85,6 +85,7 @@ public static class CodeGenerator
         if (candidates.Count == 0 && tooLarge is not null)
             System.Runtime.ExceptionServices.ExceptionDispatchInfo.Capture(tooLarge.InnerException!).Throw();
         GenerationProfile.Time("difference forms", () => { AddDifferenceForms(candidates, builtBlocks, request.Relations); return 0; });
+        AddDivisionForms(candidates);
         // The fastest accurate form wins (see FormRanking); equal estimates go to fewer operations,
         // fewer temporaries, then the joined (simplest) form.
         var ordered = candidates
@@ -124,6 +125,21 @@ public static class CodeGenerator
         catch (Exception e) when (splitFormsExist && (e as Algebra.AlgebraException ?? e.InnerException as Algebra.AlgebraException) is { ExceedsLimit: true })
         {
             return null;
+        }
+    }
+
+    /// <summary>
+    /// For each form that multiplies by reciprocals, the same form dividing instead: faster where
+    /// the multipliers are busier than the divider (<see cref="Passes.ReciprocalDivisionPass"/>).
+    /// </summary>
+    private static void AddDivisionForms(List<(CodeBlock Block, JoinMode Form)> candidates)
+    {
+        var pass = new Passes.ReciprocalDivisionPass();
+        for (var i = candidates.Count - 1; i >= 0; i--)
+        {
+            var variant = pass.Run(candidates[i].Block);
+            if (!ReferenceEquals(variant, candidates[i].Block) && !candidates.Exists(c => c.Block.HasSameStatements(variant)))
+                candidates.Add((variant, candidates[i].Form));
         }
     }
 

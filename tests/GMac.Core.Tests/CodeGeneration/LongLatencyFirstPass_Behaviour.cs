@@ -43,6 +43,20 @@ public class LongLatencyFirstPass_Behaviour
     }
 
     [Fact]
+    public void A_quotient_of_two_computed_values_moves_only_what_its_denominator_needs()
+    {
+        // u is the numerator's, w the denominator's: w moves first, the quotient and u keep their order.
+        var before = Block(
+            Temp("u", Sum(A, Negate(B))),
+            Temp("w", Sum(Product(C, C), Product(D, D))),
+            Out("o1", Quotient(Product(U, C), W)),
+            Out("o2", Quotient(Product(U, D), W)));
+        var after = new LongLatencyFirstPass().Run(before);
+        AssertSameOutputs(before, after);
+        Assert.Equal(["w", "u", "o1", "o2"], Order(after));
+    }
+
+    [Fact]
     public void Blocks_without_long_operations_or_not_in_single_assignment_stay_as_they_are()
     {
         var plain = Block(Temp("u", Product(A, B)), Out("o1", Product(U, C)), Temp("v", Sum(C, D)), Out("o2", Product(V, V)));

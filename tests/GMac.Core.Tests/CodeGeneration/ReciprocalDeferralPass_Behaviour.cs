@@ -46,9 +46,12 @@ public class ReciprocalDeferralPass_Behaviour
     }
 
     [Fact]
-    public void Skew_lines_closest_points_needs_one_multiplication_less_than_the_hand_formula_and_no_negation()
+    public void Skew_lines_closest_points_divide_both_numerators_with_two_multiplications_less_than_the_hand_formula_and_no_negation()
     {
-        // (7.13): t1 = d2⌋(d1∧d2)⁻¹⌋(p2 − p1), t2 = d1⌋(d1∧d2)⁻¹⌋(p2 − p1)
+        // (7.13): t1 = d2⌋(d1∧d2)⁻¹⌋(p2 − p1), t2 = d1⌋(d1∧d2)⁻¹⌋(p2 − p1). With the reciprocal of
+        // |d1 × d2|² deferred it takes 23 multiplications and 1 division; dividing the two
+        // numerators, 21 and 2, which the time model puts ahead: the multipliers, not the divider,
+        // bound this kernel (ReciprocalDivisionPass).
         var request = new CodeGenerationRequest(
             r =>
             {
@@ -66,7 +69,7 @@ public class ReciprocalDeferralPass_Behaviour
             new Dictionary<string, string> { ["t1"] = "t1", ["t2"] = "t2" });
         var result = CodeGenerator.Generate(request);
         CodeGenerator_Kernels.AssertAgreesWithNumeric(result.Block, request, 13);
-        Assert.Equal((15, 23, 1, 0), (result.Statistics.Additions, result.Statistics.Multiplications, result.Statistics.Divisions, result.Statistics.Calls));
+        Assert.Equal((15, 21, 2, 0), (result.Statistics.Additions, result.Statistics.Multiplications, result.Statistics.Divisions, result.Statistics.Calls));
         Assert.Equal(0, result.Statistics.Negations);
     }
 }

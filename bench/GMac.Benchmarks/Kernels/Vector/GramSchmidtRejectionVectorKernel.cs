@@ -54,23 +54,23 @@ public sealed class GramSchmidtRejectionVectorKernel() : VectorKernel(new GramSc
             var item6 = Vector256.LoadUnsafe(ref span6, (nuint)k);
             var item7 = Vector256.LoadUnsafe(ref span7, (nuint)k);
             var item8 = Vector256.LoadUnsafe(ref span8, (nuint)k);
-            var tmp0 = (item0 * item3 + item1 * item4 + item2 * item5) / (item2 * item2 + item0 * item0 + item1 * item1);
-            var tmp1 = item4 - item1;
-            var tmp2 = item3 - item0;
-            var tmp3 = tmp1 * item0 - tmp2 * item1;
-            var tmp4 = item5 - item2;
-            var tmp5 = tmp2 * item2 - tmp4 * item0;
-            var tmp6 = tmp4 * item1 - tmp1 * item2;
-            var tmp7 = (item7 * tmp5 + item6 * tmp6 + item8 * tmp3) / (tmp3 * tmp3 + tmp5 * tmp5 + tmp6 * tmp6);
+            var tmp0 = item4 - item1;
+            var tmp1 = item3 - item0;
+            var tmp2 = tmp0 * item0 - tmp1 * item1;
+            var tmp3 = item5 - item2;
+            var tmp4 = tmp1 * item2 - tmp3 * item0;
+            var tmp5 = tmp3 * item1 - tmp0 * item2;
+            var tmp6 = (item0 * item3 + item1 * item4 + item2 * item5) / (item2 * item2 + item0 * item0 + item1 * item1);
             var result0 = item0;
             var result1 = item1;
             var result2 = item2;
-            var result3 = item3 - item0 * tmp0;
-            var result4 = item4 - item1 * tmp0;
-            var result5 = item5 - item2 * tmp0;
-            var result6 = tmp6 * tmp7;
-            var result7 = tmp5 * tmp7;
-            var result8 = tmp3 * tmp7;
+            var result3 = item3 - item0 * tmp6;
+            var result4 = item4 - item1 * tmp6;
+            var result5 = item5 - item2 * tmp6;
+            var tmp7 = (item7 * tmp4 + item6 * tmp5 + item8 * tmp2) / (tmp2 * tmp2 + tmp4 * tmp4 + tmp5 * tmp5);
+            var result6 = tmp5 * tmp7;
+            var result7 = tmp4 * tmp7;
+            var result8 = tmp2 * tmp7;
             Vector256.StoreUnsafe(result0, ref span9, (nuint)k);
             Vector256.StoreUnsafe(result1, ref span10, (nuint)k);
             Vector256.StoreUnsafe(result2, ref span11, (nuint)k);
@@ -83,23 +83,23 @@ public sealed class GramSchmidtRejectionVectorKernel() : VectorKernel(new GramSc
         }
         for (; k < count0; k++)
         {
-            double tmp0 = (A.x[k] * B.x[k] + A.y[k] * B.y[k] + A.z[k] * B.z[k]) / (A.z[k] * A.z[k] + A.x[k] * A.x[k] + A.y[k] * A.y[k]);
-            double tmp1 = B.y[k] - A.y[k];
-            double tmp2 = B.x[k] - A.x[k];
-            double tmp3 = tmp1 * A.x[k] - tmp2 * A.y[k];
-            double tmp4 = B.z[k] - A.z[k];
-            double tmp5 = tmp2 * A.z[k] - tmp4 * A.x[k];
-            double tmp6 = tmp4 * A.y[k] - tmp1 * A.z[k];
-            double tmp7 = (C.y[k] * tmp5 + C.x[k] * tmp6 + C.z[k] * tmp3) / (tmp3 * tmp3 + tmp5 * tmp5 + tmp6 * tmp6);
+            double tmp0 = B.y[k] - A.y[k];
+            double tmp1 = B.x[k] - A.x[k];
+            double tmp2 = tmp0 * A.x[k] - tmp1 * A.y[k];
+            double tmp3 = B.z[k] - A.z[k];
+            double tmp4 = tmp1 * A.z[k] - tmp3 * A.x[k];
+            double tmp5 = tmp3 * A.y[k] - tmp0 * A.z[k];
+            double tmp6 = (A.x[k] * B.x[k] + A.y[k] * B.y[k] + A.z[k] * B.z[k]) / (A.z[k] * A.z[k] + A.x[k] * A.x[k] + A.y[k] * A.y[k]);
             WA.x[k] = A.x[k];
             WA.y[k] = A.y[k];
             WA.z[k] = A.z[k];
-            WB.x[k] = B.x[k] - A.x[k] * tmp0;
-            WB.y[k] = B.y[k] - A.y[k] * tmp0;
-            WB.z[k] = B.z[k] - A.z[k] * tmp0;
-            WC.x[k] = tmp6 * tmp7;
-            WC.y[k] = tmp5 * tmp7;
-            WC.z[k] = tmp3 * tmp7;
+            WB.x[k] = B.x[k] - A.x[k] * tmp6;
+            WB.y[k] = B.y[k] - A.y[k] * tmp6;
+            WB.z[k] = B.z[k] - A.z[k] * tmp6;
+            double tmp7 = (C.y[k] * tmp4 + C.x[k] * tmp5 + C.z[k] * tmp2) / (tmp2 * tmp2 + tmp4 * tmp4 + tmp5 * tmp5);
+            WC.x[k] = tmp5 * tmp7;
+            WC.y[k] = tmp4 * tmp7;
+            WC.z[k] = tmp2 * tmp7;
         }
         #endregion
     }
@@ -153,23 +153,23 @@ public sealed class GramSchmidtRejectionVectorKernel() : VectorKernel(new GramSc
             var item6 = Vector512.LoadUnsafe(ref span6, (nuint)k);
             var item7 = Vector512.LoadUnsafe(ref span7, (nuint)k);
             var item8 = Vector512.LoadUnsafe(ref span8, (nuint)k);
-            var tmp0 = (item0 * item3 + item1 * item4 + item2 * item5) / (item2 * item2 + item0 * item0 + item1 * item1);
-            var tmp1 = item4 - item1;
-            var tmp2 = item3 - item0;
-            var tmp3 = tmp1 * item0 - tmp2 * item1;
-            var tmp4 = item5 - item2;
-            var tmp5 = tmp2 * item2 - tmp4 * item0;
-            var tmp6 = tmp4 * item1 - tmp1 * item2;
-            var tmp7 = (item7 * tmp5 + item6 * tmp6 + item8 * tmp3) / (tmp3 * tmp3 + tmp5 * tmp5 + tmp6 * tmp6);
+            var tmp0 = item4 - item1;
+            var tmp1 = item3 - item0;
+            var tmp2 = tmp0 * item0 - tmp1 * item1;
+            var tmp3 = item5 - item2;
+            var tmp4 = tmp1 * item2 - tmp3 * item0;
+            var tmp5 = tmp3 * item1 - tmp0 * item2;
+            var tmp6 = (item0 * item3 + item1 * item4 + item2 * item5) / (item2 * item2 + item0 * item0 + item1 * item1);
             var result0 = item0;
             var result1 = item1;
             var result2 = item2;
-            var result3 = item3 - item0 * tmp0;
-            var result4 = item4 - item1 * tmp0;
-            var result5 = item5 - item2 * tmp0;
-            var result6 = tmp6 * tmp7;
-            var result7 = tmp5 * tmp7;
-            var result8 = tmp3 * tmp7;
+            var result3 = item3 - item0 * tmp6;
+            var result4 = item4 - item1 * tmp6;
+            var result5 = item5 - item2 * tmp6;
+            var tmp7 = (item7 * tmp4 + item6 * tmp5 + item8 * tmp2) / (tmp2 * tmp2 + tmp4 * tmp4 + tmp5 * tmp5);
+            var result6 = tmp5 * tmp7;
+            var result7 = tmp4 * tmp7;
+            var result8 = tmp2 * tmp7;
             Vector512.StoreUnsafe(result0, ref span9, (nuint)k);
             Vector512.StoreUnsafe(result1, ref span10, (nuint)k);
             Vector512.StoreUnsafe(result2, ref span11, (nuint)k);
@@ -182,23 +182,23 @@ public sealed class GramSchmidtRejectionVectorKernel() : VectorKernel(new GramSc
         }
         for (; k < count0; k++)
         {
-            double tmp0 = (A.x[k] * B.x[k] + A.y[k] * B.y[k] + A.z[k] * B.z[k]) / (A.z[k] * A.z[k] + A.x[k] * A.x[k] + A.y[k] * A.y[k]);
-            double tmp1 = B.y[k] - A.y[k];
-            double tmp2 = B.x[k] - A.x[k];
-            double tmp3 = tmp1 * A.x[k] - tmp2 * A.y[k];
-            double tmp4 = B.z[k] - A.z[k];
-            double tmp5 = tmp2 * A.z[k] - tmp4 * A.x[k];
-            double tmp6 = tmp4 * A.y[k] - tmp1 * A.z[k];
-            double tmp7 = (C.y[k] * tmp5 + C.x[k] * tmp6 + C.z[k] * tmp3) / (tmp3 * tmp3 + tmp5 * tmp5 + tmp6 * tmp6);
+            double tmp0 = B.y[k] - A.y[k];
+            double tmp1 = B.x[k] - A.x[k];
+            double tmp2 = tmp0 * A.x[k] - tmp1 * A.y[k];
+            double tmp3 = B.z[k] - A.z[k];
+            double tmp4 = tmp1 * A.z[k] - tmp3 * A.x[k];
+            double tmp5 = tmp3 * A.y[k] - tmp0 * A.z[k];
+            double tmp6 = (A.x[k] * B.x[k] + A.y[k] * B.y[k] + A.z[k] * B.z[k]) / (A.z[k] * A.z[k] + A.x[k] * A.x[k] + A.y[k] * A.y[k]);
             WA.x[k] = A.x[k];
             WA.y[k] = A.y[k];
             WA.z[k] = A.z[k];
-            WB.x[k] = B.x[k] - A.x[k] * tmp0;
-            WB.y[k] = B.y[k] - A.y[k] * tmp0;
-            WB.z[k] = B.z[k] - A.z[k] * tmp0;
-            WC.x[k] = tmp6 * tmp7;
-            WC.y[k] = tmp5 * tmp7;
-            WC.z[k] = tmp3 * tmp7;
+            WB.x[k] = B.x[k] - A.x[k] * tmp6;
+            WB.y[k] = B.y[k] - A.y[k] * tmp6;
+            WB.z[k] = B.z[k] - A.z[k] * tmp6;
+            double tmp7 = (C.y[k] * tmp4 + C.x[k] * tmp5 + C.z[k] * tmp2) / (tmp2 * tmp2 + tmp4 * tmp4 + tmp5 * tmp5);
+            WC.x[k] = tmp5 * tmp7;
+            WC.y[k] = tmp4 * tmp7;
+            WC.z[k] = tmp2 * tmp7;
         }
         #endregion
     }

@@ -86,13 +86,13 @@ public sealed class RotorInterpolateVectorKernel() : VectorKernel(new RotorInter
             var tmp1 = tmpL11;
             var tmp2 = Vector256.Sin(tmp1);
             var tmp3 = tmp1 * item8;
-            var (tmp4, tmp6) = Vector256.SinCos(tmp3);
-            var tmp5 = tmp4 / tmp2;
-            var tmp7 = tmp6 - tmp0 * tmp5;
-            var result0 = item0 * tmp7 + item4 * tmp5;
-            var result1 = item1 * tmp7 + item5 * tmp5;
-            var result2 = item2 * tmp7 + item6 * tmp5;
-            var result3 = item3 * tmp7 + item7 * tmp5;
+            var (tmp4, tmp5) = Vector256.SinCos(tmp3);
+            var tmp6 = tmp4 / tmp2;
+            var tmp7 = tmp5 - tmp0 * tmp6;
+            var result0 = item0 * tmp7 + item4 * tmp6;
+            var result1 = item1 * tmp7 + item5 * tmp6;
+            var result2 = item2 * tmp7 + item6 * tmp6;
+            var result3 = item3 * tmp7 + item7 * tmp6;
             Vector256.StoreUnsafe(result0, ref span9, (nuint)k);
             Vector256.StoreUnsafe(result1, ref span10, (nuint)k);
             Vector256.StoreUnsafe(result2, ref span11, (nuint)k);
@@ -104,13 +104,13 @@ public sealed class RotorInterpolateVectorKernel() : VectorKernel(new RotorInter
             double tmp1 = Math.Acos(tmp0);
             double tmp2 = Math.Sin(tmp1);
             double tmp3 = tmp1 * Alpha[k];
-            var (tmp4, tmp6) = Math.SinCos(tmp3);
-            double tmp5 = tmp4 / tmp2;
-            double tmp7 = tmp6 - tmp0 * tmp5;
-            R.w[k] = R1.w[k] * tmp7 + R2.w[k] * tmp5;
-            R.x[k] = R1.x[k] * tmp7 + R2.x[k] * tmp5;
-            R.y[k] = R1.y[k] * tmp7 + R2.y[k] * tmp5;
-            R.z[k] = R1.z[k] * tmp7 + R2.z[k] * tmp5;
+            var (tmp4, tmp5) = Math.SinCos(tmp3);
+            double tmp6 = tmp4 / tmp2;
+            double tmp7 = tmp5 - tmp0 * tmp6;
+            R.w[k] = R1.w[k] * tmp7 + R2.w[k] * tmp6;
+            R.x[k] = R1.x[k] * tmp7 + R2.x[k] * tmp6;
+            R.y[k] = R1.y[k] * tmp7 + R2.y[k] * tmp6;
+            R.z[k] = R1.z[k] * tmp7 + R2.z[k] * tmp6;
         }
         #endregion
     }
@@ -196,13 +196,13 @@ public sealed class RotorInterpolateVectorKernel() : VectorKernel(new RotorInter
             var tmp1 = tmpL11;
             var tmp2 = Vector512.Sin(tmp1);
             var tmp3 = tmp1 * item8;
-            var (tmp4, tmp6) = Vector512.SinCos(tmp3);
-            var tmp5 = tmp4 / tmp2;
-            var tmp7 = tmp6 - tmp0 * tmp5;
-            var result0 = item0 * tmp7 + item4 * tmp5;
-            var result1 = item1 * tmp7 + item5 * tmp5;
-            var result2 = item2 * tmp7 + item6 * tmp5;
-            var result3 = item3 * tmp7 + item7 * tmp5;
+            var (tmp4, tmp5) = Vector512.SinCos(tmp3);
+            var tmp6 = tmp4 / tmp2;
+            var tmp7 = tmp5 - tmp0 * tmp6;
+            var result0 = item0 * tmp7 + item4 * tmp6;
+            var result1 = item1 * tmp7 + item5 * tmp6;
+            var result2 = item2 * tmp7 + item6 * tmp6;
+            var result3 = item3 * tmp7 + item7 * tmp6;
             Vector512.StoreUnsafe(result0, ref span9, (nuint)k);
             Vector512.StoreUnsafe(result1, ref span10, (nuint)k);
             Vector512.StoreUnsafe(result2, ref span11, (nuint)k);
@@ -214,13 +214,13 @@ public sealed class RotorInterpolateVectorKernel() : VectorKernel(new RotorInter
             double tmp1 = Math.Acos(tmp0);
             double tmp2 = Math.Sin(tmp1);
             double tmp3 = tmp1 * Alpha[k];
-            var (tmp4, tmp6) = Math.SinCos(tmp3);
-            double tmp5 = tmp4 / tmp2;
-            double tmp7 = tmp6 - tmp0 * tmp5;
-            R.w[k] = R1.w[k] * tmp7 + R2.w[k] * tmp5;
-            R.x[k] = R1.x[k] * tmp7 + R2.x[k] * tmp5;
-            R.y[k] = R1.y[k] * tmp7 + R2.y[k] * tmp5;
-            R.z[k] = R1.z[k] * tmp7 + R2.z[k] * tmp5;
+            var (tmp4, tmp5) = Math.SinCos(tmp3);
+            double tmp6 = tmp4 / tmp2;
+            double tmp7 = tmp5 - tmp0 * tmp6;
+            R.w[k] = R1.w[k] * tmp7 + R2.w[k] * tmp6;
+            R.x[k] = R1.x[k] * tmp7 + R2.x[k] * tmp6;
+            R.y[k] = R1.y[k] * tmp7 + R2.y[k] * tmp6;
+            R.z[k] = R1.z[k] * tmp7 + R2.z[k] * tmp6;
         }
         #endregion
     }

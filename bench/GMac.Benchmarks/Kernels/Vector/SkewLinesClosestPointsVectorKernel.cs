@@ -38,7 +38,6 @@ public sealed class SkewLinesClosestPointsVectorKernel() : VectorKernel(new Skew
         ref double span11 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)D2.z);
         ref double span12 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)T1);
         ref double span13 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)T2);
-        var tmpC0 = Vector256.Create(1.0);
         int k = 0;
         for (; k <= count0 - Vector256<double>.Count; k += Vector256<double>.Count)
         {
@@ -57,15 +56,15 @@ public sealed class SkewLinesClosestPointsVectorKernel() : VectorKernel(new Skew
             var tmp0 = item10 * item3 - item4 * item9;
             var tmp1 = item11 * item3 - item5 * item9;
             var tmp2 = item11 * item4 - item10 * item5;
-            var tmp3 = tmpC0 / (tmp0 * tmp0 + tmp1 * tmp1 + tmp2 * tmp2);
+            var tmp3 = tmp0 * tmp0 + tmp1 * tmp1 + tmp2 * tmp2;
             var tmp4 = item6 - item0;
             var tmp5 = item7 - item1;
             var tmp6 = item8 - item2;
             var tmp7 = tmp4 * tmp0 - tmp2 * tmp6;
             var tmp8 = tmp6 * tmp1 + tmp5 * tmp0;
             var tmp9 = tmp2 * tmp5 + tmp4 * tmp1;
-            var result0 = tmp3 * (item10 * tmp7 + item11 * tmp9 - item9 * tmp8);
-            var result1 = tmp3 * (item4 * tmp7 + item5 * tmp9 - item3 * tmp8);
+            var result0 = (item10 * tmp7 + item11 * tmp9 - item9 * tmp8) / tmp3;
+            var result1 = (item4 * tmp7 + item5 * tmp9 - item3 * tmp8) / tmp3;
             Vector256.StoreUnsafe(result0, ref span12, (nuint)k);
             Vector256.StoreUnsafe(result1, ref span13, (nuint)k);
         }
@@ -74,15 +73,15 @@ public sealed class SkewLinesClosestPointsVectorKernel() : VectorKernel(new Skew
             double tmp0 = D2.y[k] * D1.x[k] - D1.y[k] * D2.x[k];
             double tmp1 = D2.z[k] * D1.x[k] - D1.z[k] * D2.x[k];
             double tmp2 = D2.z[k] * D1.y[k] - D2.y[k] * D1.z[k];
-            double tmp3 = 1.0 / (tmp0 * tmp0 + tmp1 * tmp1 + tmp2 * tmp2);
+            double tmp3 = tmp0 * tmp0 + tmp1 * tmp1 + tmp2 * tmp2;
             double tmp4 = P2.x[k] - P1.x[k];
             double tmp5 = P2.y[k] - P1.y[k];
             double tmp6 = P2.z[k] - P1.z[k];
             double tmp7 = tmp4 * tmp0 - tmp2 * tmp6;
             double tmp8 = tmp6 * tmp1 + tmp5 * tmp0;
             double tmp9 = tmp2 * tmp5 + tmp4 * tmp1;
-            T1[k] = tmp3 * (D2.y[k] * tmp7 + D2.z[k] * tmp9 - D2.x[k] * tmp8);
-            T2[k] = tmp3 * (D1.y[k] * tmp7 + D1.z[k] * tmp9 - D1.x[k] * tmp8);
+            T1[k] = (D2.y[k] * tmp7 + D2.z[k] * tmp9 - D2.x[k] * tmp8) / tmp3;
+            T2[k] = (D1.y[k] * tmp7 + D1.z[k] * tmp9 - D1.x[k] * tmp8) / tmp3;
         }
         #endregion
     }
@@ -120,7 +119,6 @@ public sealed class SkewLinesClosestPointsVectorKernel() : VectorKernel(new Skew
         ref double span11 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.ReadOnlySpan<double>)D2.z);
         ref double span12 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)T1);
         ref double span13 = ref global::System.Runtime.InteropServices.MemoryMarshal.GetReference((global::System.Span<double>)T2);
-        var tmpC0 = Vector512.Create(1.0);
         int k = 0;
         for (; k <= count0 - Vector512<double>.Count; k += Vector512<double>.Count)
         {
@@ -139,15 +137,15 @@ public sealed class SkewLinesClosestPointsVectorKernel() : VectorKernel(new Skew
             var tmp0 = item10 * item3 - item4 * item9;
             var tmp1 = item11 * item3 - item5 * item9;
             var tmp2 = item11 * item4 - item10 * item5;
-            var tmp3 = tmpC0 / (tmp0 * tmp0 + tmp1 * tmp1 + tmp2 * tmp2);
+            var tmp3 = tmp0 * tmp0 + tmp1 * tmp1 + tmp2 * tmp2;
             var tmp4 = item6 - item0;
             var tmp5 = item7 - item1;
             var tmp6 = item8 - item2;
             var tmp7 = tmp4 * tmp0 - tmp2 * tmp6;
             var tmp8 = tmp6 * tmp1 + tmp5 * tmp0;
             var tmp9 = tmp2 * tmp5 + tmp4 * tmp1;
-            var result0 = tmp3 * (item10 * tmp7 + item11 * tmp9 - item9 * tmp8);
-            var result1 = tmp3 * (item4 * tmp7 + item5 * tmp9 - item3 * tmp8);
+            var result0 = (item10 * tmp7 + item11 * tmp9 - item9 * tmp8) / tmp3;
+            var result1 = (item4 * tmp7 + item5 * tmp9 - item3 * tmp8) / tmp3;
             Vector512.StoreUnsafe(result0, ref span12, (nuint)k);
             Vector512.StoreUnsafe(result1, ref span13, (nuint)k);
         }
@@ -156,15 +154,15 @@ public sealed class SkewLinesClosestPointsVectorKernel() : VectorKernel(new Skew
             double tmp0 = D2.y[k] * D1.x[k] - D1.y[k] * D2.x[k];
             double tmp1 = D2.z[k] * D1.x[k] - D1.z[k] * D2.x[k];
             double tmp2 = D2.z[k] * D1.y[k] - D2.y[k] * D1.z[k];
-            double tmp3 = 1.0 / (tmp0 * tmp0 + tmp1 * tmp1 + tmp2 * tmp2);
+            double tmp3 = tmp0 * tmp0 + tmp1 * tmp1 + tmp2 * tmp2;
             double tmp4 = P2.x[k] - P1.x[k];
             double tmp5 = P2.y[k] - P1.y[k];
             double tmp6 = P2.z[k] - P1.z[k];
             double tmp7 = tmp4 * tmp0 - tmp2 * tmp6;
             double tmp8 = tmp6 * tmp1 + tmp5 * tmp0;
             double tmp9 = tmp2 * tmp5 + tmp4 * tmp1;
-            T1[k] = tmp3 * (D2.y[k] * tmp7 + D2.z[k] * tmp9 - D2.x[k] * tmp8);
-            T2[k] = tmp3 * (D1.y[k] * tmp7 + D1.z[k] * tmp9 - D1.x[k] * tmp8);
+            T1[k] = (D2.y[k] * tmp7 + D2.z[k] * tmp9 - D2.x[k] * tmp8) / tmp3;
+            T2[k] = (D1.y[k] * tmp7 + D1.z[k] * tmp9 - D1.x[k] * tmp8) / tmp3;
         }
         #endregion
     }

@@ -6,7 +6,8 @@ namespace GMac.Core.CodeGeneration.Passes;
 /// as long as a multiplication: started first, its wait is filled by the work that does not lead to
 /// it, where reached late it leaves the statements after it waiting. The JIT keeps the order of
 /// statements and a processor reorders only within a window, so the order shows in time: the
-/// skew-lines kernel ran 3–4 % faster with its division first. Blocks without such an operation
+/// skew-lines kernel ran 3–4 % faster with its division first, and as much again with the
+/// denominator of its two quotients first. Blocks without such an operation
 /// keep their order (moving stores or loads in them was measured slower as often as faster).
 /// Changes no operation and no value.
 /// </summary>
@@ -37,11 +38,21 @@ public sealed class LongLatencyFirstPass : IOptimizerPass
             }
         }
 
-        // Long statements and everything they need, found from the last statement back.
+        // Long statements and everything they need, found from the last statement back. A
+        // quotient x / d of two computed values (not a reciprocal) moves only the statements its
+        // denominator needs: with both in source order the skew-lines kernel, which divides its
+        // two numerators by |n|², measured 1.07 of hand time; with |n|² first, 1.04.
         var early = new bool[assignments.Length];
         for (var i = assignments.Length - 1; i >= 0; i--)
         {
-            if (!early[i] && !IsLong(assignments[i].Value)) continue;
+            var value = assignments[i].Value;
+            if (!early[i] && value is QuotientExpr { Numerator: not ConstantExpr } q && !IsLong(q.Numerator) && !IsLong(q.Denominator))
+            {
+                foreach (var v in q.Denominator.DescendantsAndSelf().OfType<VariableExpr>())
+                    if (definedAt.TryGetValue(v.Name, out var d)) early[d] = true;
+                continue;
+            }
+            if (!early[i] && !IsLong(value)) continue;
             early[i] = true;
             foreach (var d in reads[i]) early[d] = true;
         }
