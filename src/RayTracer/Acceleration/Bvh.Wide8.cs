@@ -22,7 +22,7 @@ public sealed partial class Bvh
     {
         var r = new WideRay8(ray);
         var max = TOrigin.Moved ? WideRay8.MaxOf(ray) : default;
-        var nodes = _wide8;
+        ref var nodes = ref _wide8.First;
         var leaves = _leaves;
         var groups = _groups;
         var lanes = new TriangleGroupSolver.RayLanes(ray);
@@ -35,7 +35,7 @@ public sealed partial class Bvh
 
         while (true)
         {
-            ref var node = ref nodes[current];
+            ref var node = ref Unsafe.Add(ref nodes, current);
             int mask = r.Hits<TOrigin>(ref node, t, in max, out var enter);
 
             // A single interior child needs no trip through the stack.
@@ -141,7 +141,7 @@ public sealed partial class Bvh
     {
         var r = new WideRay8(ray);
         var max = TOrigin.Moved ? WideRay8.MaxOf(ray) : default;
-        var nodes = _wide8;
+        ref var nodes = ref _wide8.First;
         var leaves = _leaves;
         var groups = _groups;
         var lanes = new TriangleGroupSolver.RayLanes(ray);
@@ -155,7 +155,7 @@ public sealed partial class Bvh
         {
             if (reference >= 0)
             {
-                ref var node = ref nodes[reference];
+                ref var node = ref Unsafe.Add(ref nodes, reference);
                 int mask = r.Hits<TOrigin>(ref node, tMax, in max, out _);
                 if (mask != 0)
                 {

@@ -32,7 +32,7 @@ public sealed partial class Bvh : AccelerationStructure
 
     private readonly BvhNode[] _nodes;
     private readonly Bvh4Node[] _wide = [];
-    private readonly Bvh8Node[] _wide8 = [];
+    private readonly AlignedArray<Bvh8Node> _wide8;
     private readonly BvhLeaf[] _leaves = [];
     private readonly TriangleGroup4[] _groups = [];
     private int _wideCount;
@@ -77,7 +77,7 @@ public sealed partial class Bvh : AccelerationStructure
             Table.Permute(order);
         // Every wide node opens at least one binary interior node, so the same bound holds for either width.
         if (width == 8)
-            _wide8 = GC.AllocateUninitializedArray<Bvh8Node>(Math.Max(1, (binaryNodes - 1) / 2));
+            _wide8 = new AlignedArray<Bvh8Node>(Math.Max(1, (binaryNodes - 1) / 2));
         else
             _wide = GC.AllocateUninitializedArray<Bvh4Node>(Math.Max(1, (binaryNodes - 1) / 2));
         _leaves = GC.AllocateUninitializedArray<BvhLeaf>((binaryNodes + 1) / 2);
