@@ -8,7 +8,8 @@ namespace RayTracer.Acceleration;
 
 /// <summary>
 /// The traversal of eight-wide nodes (<see cref="Bvh8Node"/>, one <see cref="Vector512{T}"/> box test per
-/// node): the four-wide traversal's order, skips and leaf tests, with half as many levels to descend.
+/// node) and eight-lane leaf groups (<see cref="TriangleGroup8"/>): the four-wide traversal's order and
+/// skips, with fewer levels to descend.
 /// </summary>
 public sealed partial class Bvh
 {
@@ -24,8 +25,8 @@ public sealed partial class Bvh
         var max = TOrigin.Moved ? WideRay8.MaxOf(ray) : default;
         ref var nodes = ref _wide8.First;
         var leaves = _leaves;
-        var groups = _groups;
-        var lanes = new TriangleGroupSolver.RayLanes(ray);
+        var groups = _groups8;
+        var lanes = new TriangleGroup8Solver.RayLanes(ray);
         var table = Table;
         Span<int> stackRef = stackalloc int[StackSize8];
         Span<double> stackEnter = stackalloc double[StackSize8];
@@ -95,9 +96,9 @@ public sealed partial class Bvh
                 {
                     for (int g = 0; g < leaf.GroupCount; g++)
                     {
-                        var tMax = Vector256.Create(t);
-                        var tv = TriangleGroupSolver.Distances(lanes, ref groups[leaf.Group + g], tMax);
-                        int found = (int)Vector256.LessThan(tv, tMax).ExtractMostSignificantBits();
+                        var tMax = Vector512.Create(t);
+                        var tv = TriangleGroup8Solver.Distances(lanes, ref groups[leaf.Group + g], tMax);
+                        int found = (int)Vector512.LessThan(tv, tMax).ExtractMostSignificantBits();
                         while (found != 0)
                         {
                             // Lanes in index order with a strict test: ties go to the lower index, as in the scalar loop.
@@ -107,7 +108,7 @@ public sealed partial class Bvh
                             if (ti < t)
                             {
                                 t = ti;
-                                primitive = leaf.First + 4 * g + lane;
+                                primitive = leaf.First + 8 * g + lane;
                                 hit = true;
                             }
                         }
@@ -143,10 +144,10 @@ public sealed partial class Bvh
         var max = TOrigin.Moved ? WideRay8.MaxOf(ray) : default;
         ref var nodes = ref _wide8.First;
         var leaves = _leaves;
-        var groups = _groups;
-        var lanes = new TriangleGroupSolver.RayLanes(ray);
+        var groups = _groups8;
+        var lanes = new TriangleGroup8Solver.RayLanes(ray);
         var table = Table;
-        var tMaxLanes = Vector256.Create(tMax);
+        var tMaxLanes = Vector512.Create(tMax);
         Span<int> stackRef = stackalloc int[StackSize8];
         int sp = 0;
         int reference = 0;
@@ -178,7 +179,7 @@ public sealed partial class Bvh
                 {
                     for (int g = 0; g < leaf.GroupCount; g++)
                     {
-                        if (Vector256.LessThanAny(TriangleGroupSolver.Distances(lanes, ref groups[leaf.Group + g], tMaxLanes), tMaxLanes))
+                        if (Vector512.LessThanAny(TriangleGroup8Solver.Distances(lanes, ref groups[leaf.Group + g], tMaxLanes), tMaxLanes))
                         {
                             return true;
                         }

@@ -13,8 +13,8 @@ namespace RayTracer.Acceleration;
 /// Bounding volume hierarchy built top-down with the binned surface area heuristic (see
 /// <see cref="BvhBuilder"/>), then collapsed into eight-wide nodes where <see cref="Vector512"/> is
 /// accelerated and four-wide nodes elsewhere, whose child boxes are tested together with vector
-/// instructions; leaves of triangles test four of them at once
-/// (<see cref="TriangleGroupSolver"/>). Traversal uses a fixed stack on the call stack (no allocation),
+/// instructions; leaves of triangles test as many of them at once (<see cref="TriangleGroup8Solver"/>,
+/// <see cref="TriangleGroupSolver"/>). Traversal uses a fixed stack on the call stack (no allocation),
 /// visits entered children nearest first and skips subtrees that start beyond the best hit so far.
 /// </summary>
 public sealed partial class Bvh : AccelerationStructure
@@ -35,10 +35,17 @@ public sealed partial class Bvh : AccelerationStructure
     private readonly AlignedArray<Bvh8Node> _wide8;
     private readonly BvhLeaf[] _leaves = [];
     private readonly TriangleGroup4[] _groups = [];
+    private readonly AlignedArray<TriangleGroup8> _groups8;
     private int _wideCount;
     private int _leafCount;
 
-    public Bvh(IReadOnlyList<GeometricObject> objects, int maxLeafSize = 4)
+    /// <summary>A BVH whose leaves hold up to as many primitives as a node has children (8 or 4).</summary>
+    public Bvh(IReadOnlyList<GeometricObject> objects)
+        : this(objects, DefaultWidth)
+    {
+    }
+
+    public Bvh(IReadOnlyList<GeometricObject> objects, int maxLeafSize)
         : this(objects, maxLeafSize, BvhBuilder.Parallelism.Default)
     {
     }
@@ -49,7 +56,12 @@ public sealed partial class Bvh : AccelerationStructure
     {
     }
 
-    /// <summary>As above, with the width of the traversal nodes (4, or 8 where <see cref="Vector512"/> is accelerated).</summary>
+    /// <summary>
+    /// As above, with the width of the traversal nodes: 4, or 8 where <see cref="Vector512"/> is accelerated.
+    /// Leaves of triangles are tested in groups of as many lanes (<see cref="TriangleGroup4"/> with the
+    /// four-wide nodes, <see cref="TriangleGroup8"/> with the eight-wide ones), and the SAH counts a leaf's
+    /// cost per group.
+    /// </summary>
     internal Bvh(IReadOnlyList<GeometricObject> objects, int maxLeafSize, BvhBuilder.Parallelism parallelism, int width)
         : base(objects)
     {
@@ -65,10 +77,10 @@ public sealed partial class Bvh : AccelerationStructure
             return;
         }
 
-        _nodes = BvhBuilder.Build(Table.Bounds, maxLeafSize, MaxDepth, parallelism, out var order, out int binaryNodes);
+        _nodes = BvhBuilder.Build(Table.Bounds, maxLeafSize, width, MaxDepth, parallelism, out var order, out int binaryNodes);
         Table.ReleaseBuildData();
 
-        // The table is put in build order while this thread collapses pairs of levels into four-wide
+        // The table is put in build order while this thread collapses levels into wide
         // nodes for traversal (the collapse reads only the binary nodes). A full binary tree of m nodes has
         // (m + 1) / 2 leaves, which stay leaves, and (m - 1) / 2 interior nodes, at least two per wide
         // node but the root; the wide array may be longer than its count, and its tail is never touched.
@@ -86,8 +98,11 @@ public sealed partial class Bvh : AccelerationStructure
         else
             Collapse(0);
         permute?.Wait();
-        int groupCount = DescribeLeaves(_leaves, out bool oneByOne);
-        _groups = FillGroups(_leaves, groupCount, Math.Max(1, parallelism.Chunk / 256));
+        int groupCount = DescribeLeaves(_leaves, width, out bool oneByOne);
+        if (width == 8)
+            _groups8 = FillGroups8(_leaves, groupCount, Math.Max(1, parallelism.Chunk / 256));
+        else
+            _groups = FillGroups(_leaves, groupCount, Math.Max(1, parallelism.Chunk / 256));
         if (oneByOne)
             Table.PackTriangles(); // some leaves test their primitives one by one
         BinaryNodeCount = binaryNodes;
@@ -314,12 +329,12 @@ public sealed partial class Bvh : AccelerationStructure
     }
 
     /// <summary>
-    /// The leaves, each with its run of four-lane groups when all its primitives are Möller–Trumbore
+    /// The leaves, each with its run of groups of <paramref name="groupSize"/> lanes when all its primitives are Möller–Trumbore
     /// triangles; returns the number of groups. <paramref name="oneByOne"/> tells whether some leaf tests its
     /// primitives one by one (in one query or both), which needs the table's packed triangles.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    private int DescribeLeaves(BvhLeaf[] leaves, out bool oneByOne)
+    private int DescribeLeaves(BvhLeaf[] leaves, int groupSize, out bool oneByOne)
     {
         int groupCount = 0;
         oneByOne = false;
@@ -339,7 +354,7 @@ public sealed partial class Bvh : AccelerationStructure
             if (triangles)
             {
                 leaves[l].Group = groupCount;
-                leaves[l].GroupCount = (count + 3) / 4;
+                leaves[l].GroupCount = (count + groupSize - 1) / groupSize;
                 leaves[l].GroupsCastShadows = castShadows;
                 groupCount += leaves[l].GroupCount;
             }
@@ -378,6 +393,52 @@ public sealed partial class Bvh : AccelerationStructure
         });
         return groups;
     }
+
+    /// <summary>Copies the leaves' triangles into their eight-lane groups; lanes left over are zero and never hit.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    private AlignedArray<TriangleGroup8> FillGroups8(BvhLeaf[] leaves, int groupCount, int leavesPerTask)
+    {
+        var groups = new AlignedArray<TriangleGroup8>(groupCount);
+        ChunkedLoop.For(leaves.Length, leavesPerTask, [MethodImpl(MethodImplOptions.AggressiveOptimization)] (start, end) =>
+        {
+            // Nine rows of eight lanes: v0, e1, e2, each x, y, z.
+            Span<double> v = stackalloc double[72];
+            for (int l = start; l < end; l++)
+            {
+                var leaf = leaves[l];
+                for (int g = 0; g < leaf.GroupCount; g++)
+                {
+                    int first = leaf.First + 8 * g, lanes = Math.Min(8, leaf.Count - 8 * g);
+                    v.Clear();
+                    for (int k = 0; k < lanes; k++)
+                    {
+                        var p = Table.MollerTrumbore(first + k);
+                        v[k] = p.V0.x;
+                        v[8 + k] = p.V0.y;
+                        v[16 + k] = p.V0.z;
+                        v[24 + k] = p.E1.x;
+                        v[32 + k] = p.E1.y;
+                        v[40 + k] = p.E1.z;
+                        v[48 + k] = p.E2.x;
+                        v[56 + k] = p.E2.y;
+                        v[64 + k] = p.E2.z;
+                    }
+
+                    groups[leaf.Group + g] = new TriangleGroup8
+                    {
+                        V0 = Lanes8(v[..24]),
+                        E1 = Lanes8(v[24..48]),
+                        E2 = Lanes8(v[48..]),
+                    };
+                }
+            }
+        });
+        return groups;
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static Vector3x8 Lanes8(ReadOnlySpan<double> xyz) =>
+        new() { x = Vector512.Create(xyz[..8]), y = Vector512.Create(xyz[8..16]), z = Vector512.Create(xyz[16..24]) };
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static Vector3x4 Lanes(double x0, double x1, double x2, double x3, double y0, double y1, double y2, double y3, double z0, double z1, double z2, double z3) =>
