@@ -1,3 +1,4 @@
+using System.Numerics;
 using System.Runtime.CompilerServices;
 using System.Runtime.ExceptionServices;
 using System.Runtime.InteropServices;
@@ -28,6 +29,8 @@ internal sealed class BvhBuilder
     private readonly PrimitiveReference[] _refs;
     private readonly BvhNode[] _nodes;
     private readonly int _maxLeafSize;
+    private readonly int _groupSize;
+    private readonly int _groupShift;
     private readonly int _maxDepth;
     private readonly Parallelism _parallelism;
     private readonly List<SubtreeJob> _offered = [];
@@ -35,7 +38,7 @@ internal sealed class BvhBuilder
     private int _nodeCount;
 
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    private BvhBuilder(BoundingBox[] bounds, int maxLeafSize, int maxDepth, Parallelism parallelism)
+    private BvhBuilder(BoundingBox[] bounds, int maxLeafSize, int groupSize, int maxDepth, Parallelism parallelism)
     {
         _parallelism = parallelism;
         int n = bounds.Length;
@@ -58,16 +61,21 @@ internal sealed class BvhBuilder
 
         _nodes = GC.AllocateUninitializedArray<BvhNode>(Math.Max(1, 2 * n - 1));
         _maxLeafSize = maxLeafSize;
+        _groupSize = groupSize;
+        _groupShift = BitOperations.Log2((uint)groupSize);
         _maxDepth = maxDepth;
     }
 
     /// <summary>
     /// Builds the tree over <paramref name="bounds"/> with its root at 0; order[i] is the primitive at build
-    /// position i, and the first <paramref name="nodeCount"/> nodes are used.
+    /// position i, and the first <paramref name="nodeCount"/> nodes are used. A leaf costs one intersection
+    /// per group of <paramref name="groupSize"/> primitives (4 or 8: the lanes its triangles are tested in).
     /// </summary>
-    public static BvhNode[] Build(BoundingBox[] bounds, int maxLeafSize, int maxDepth, Parallelism parallelism, out int[] order, out int nodeCount)
+    public static BvhNode[] Build(BoundingBox[] bounds, int maxLeafSize, int groupSize, int maxDepth, Parallelism parallelism, out int[] order, out int nodeCount)
     {
-        var builder = new BvhBuilder(bounds, maxLeafSize, maxDepth, parallelism);
+        if (groupSize is not (4 or 8))
+            throw new ArgumentOutOfRangeException(nameof(groupSize), groupSize, "4 or 8");
+        var builder = new BvhBuilder(bounds, maxLeafSize, groupSize, maxDepth, parallelism);
         int n = bounds.Length;
         var root = (Box: Empty, Centroids: Empty);
         var gate = new object();
@@ -108,8 +116,8 @@ internal sealed class BvhBuilder
         public static Parallelism None => new(int.MaxValue, int.MaxValue, int.MaxValue);
     }
 
-    /// <summary>Leaf tests cost per four-lane group: up to four triangles are tested for the price of one.</summary>
-    public static int GroupsOf(int count) => (count + 3) >> 2;
+    /// <summary>Leaf tests cost per group: up to four (or eight) triangles are tested for the price of one.</summary>
+    private int GroupsOf(int count) => (count + _groupSize - 1) >> _groupShift;
 
     private static Box Empty
     {
@@ -154,8 +162,8 @@ internal sealed class BvhBuilder
     {
         int count = end - start;
         var extent = centroids.Max - centroids.Min;
-        // Up to four primitives cost one group test, less than any split (which adds a traversal step).
-        if (count <= Math.Min(_maxLeafSize, 4))
+        // Up to a group's worth of primitives cost one group test, less than any split (which adds a traversal step).
+        if (count <= Math.Min(_maxLeafSize, _groupSize))
         {
             _nodes[index] = new BvhNode { Min = box.Min, Max = box.Max, Offset = start, Count = count };
             return;
@@ -421,10 +429,10 @@ internal sealed class BvhBuilder
     private static Vector128<float> HalfAreas(Box x, Box y, Box z) =>
         Vector128.Create(x.HalfArea, y.HalfArea, z.HalfArea, 0);
 
-    /// <summary>Four-lane groups for each lane's primitive count, as floats.</summary>
+    /// <summary>Groups for each lane's primitive count, as floats.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static Vector128<float> Groups(Vector128<int> count) =>
-        Vector128.ConvertToSingle(Vector128.ShiftRightArithmetic(count + Vector128.Create(3), 2));
+    private Vector128<float> Groups(Vector128<int> count) =>
+        Vector128.ConvertToSingle(Vector128.ShiftRightArithmetic(count + Vector128.Create(_groupSize - 1), _groupShift));
 
     /// <summary>Counts and bounds the primitives of [start, end) in the bins of their doubled centroids on each axis.</summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]

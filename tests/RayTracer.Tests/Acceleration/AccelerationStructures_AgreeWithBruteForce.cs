@@ -10,12 +10,13 @@ namespace RayTracer.Tests.Acceleration;
 
 public class AccelerationStructures_AgreeWithBruteForce
 {
-    public static TheoryData<string> Kinds => ["grid", "bih", "bvh"];
+    public static TheoryData<string> Kinds => ["grid", "bih", "bvh", "bvh4"];
 
     private static AccelerationStructure Build(string kind, IReadOnlyList<GeometricObject> objects) => kind switch
     {
         "grid" => new RegularGrid(objects),
         "bih" => new BoundingIntervalHierarchy(objects),
+        "bvh4" => new Bvh(objects, 4, BvhBuilder.Parallelism.Default, width: 4), // the fallback where the default is eight-wide
         _ => new Bvh(objects),
     };
 

@@ -18,10 +18,20 @@ namespace RayTracer.Tests.Acceleration;
 /// </summary>
 public class Bvh_GrazingRaysAgreeWithBruteForce
 {
-    public static TheoryData<double, int> Scales => new()
+    public static TheoryData<double, int, int> Scales
     {
-        { 1, 1 }, { 1, 4 }, { 0.1, 1 }, { 1e-30, 1 }, { 1e-30, 4 }, { 1e30, 1 }, { 1e30, 4 },
-    };
+        get
+        {
+            var data = new TheoryData<double, int, int>();
+            foreach (int width in BvhWidths.Available)
+            {
+                foreach (var (scale, leafSize) in (ReadOnlySpan<(double, int)>)[(1, 1), (1, 4), (0.1, 1), (1e-30, 1), (1e-30, 4), (1e30, 1), (1e30, 4)])
+                    data.Add(scale, leafSize, width);
+            }
+
+            return data;
+        }
+    }
 
     /// <summary>Unit cubes on a 3 × 3 × 3 lattice, about two in three present, each of 12 triangles.</summary>
     private static Mesh Cubes(SeededRandom random, double scale)
@@ -63,12 +73,12 @@ public class Bvh_GrazingRaysAgreeWithBruteForce
 
     [Theory]
     [MemberData(nameof(Scales))]
-    public void Rays_touching_boxes_exactly_match_brute_force(double scale, int leafSize)
+    public void Rays_touching_boxes_exactly_match_brute_force(double scale, int leafSize, int width)
     {
         var random = new SeededRandom(2900 + (ulong)leafSize);
         var mesh = Cubes(random, scale);
         var triangles = mesh.CreateTriangles(smooth: false);
-        var bvh = new Bvh(triangles, leafSize);
+        var bvh = new Bvh(triangles, leafSize, BvhBuilder.Parallelism.Default, width);
         int hits = 0;
         for (int n = 0; n < 1200; n++)
         {

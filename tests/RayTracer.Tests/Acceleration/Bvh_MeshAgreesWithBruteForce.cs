@@ -15,7 +15,22 @@ namespace RayTracer.Tests.Acceleration;
 /// </summary>
 public class Bvh_MeshAgreesWithBruteForce
 {
-    public static TheoryData<int> LeafSizes => [1, 3, 4, 8, 12];
+    public static TheoryData<int, int> LeafSizesAndWidths
+    {
+        get
+        {
+            var data = new TheoryData<int, int>();
+            foreach (int width in BvhWidths.Available)
+            {
+                foreach (int leafSize in (int[])[1, 3, 4, 8, 12])
+                    data.Add(leafSize, width);
+            }
+
+            return data;
+        }
+    }
+
+    public static TheoryData<int> Widths => [.. BvhWidths.Available];
 
     private static Point3D RandomPoint(SeededRandom random, double r) =>
         new(random.NextDouble(-r, r), random.NextDouble(-r, r), random.NextDouble(-r, r));
@@ -53,11 +68,11 @@ public class Bvh_MeshAgreesWithBruteForce
     }
 
     [Theory]
-    [MemberData(nameof(LeafSizes))]
-    public void Nearest_and_any_hit_match_brute_force_on_random_rays_and_on_vertices_and_edges(int leafSize)
+    [MemberData(nameof(LeafSizesAndWidths))]
+    public void Nearest_and_any_hit_match_brute_force_on_random_rays_and_on_vertices_and_edges(int leafSize, int width)
     {
         var (triangles, soup) = RandomMeshes(290 + (ulong)leafSize, 1200);
-        var bvh = new Bvh(triangles, leafSize);
+        var bvh = new Bvh(triangles, leafSize, BvhBuilder.Parallelism.Default, width);
         var random = new SeededRandom(291);
         for (int n = 0; n < 2500; n++)
         {
@@ -75,11 +90,12 @@ public class Bvh_MeshAgreesWithBruteForce
         }
     }
 
-    [Fact]
-    public void Rays_along_edges_and_from_vertices_match_brute_force()
+    [Theory]
+    [MemberData(nameof(Widths))]
+    public void Rays_along_edges_and_from_vertices_match_brute_force(int width)
     {
         var (triangles, soup) = RandomMeshes(292, 300);
-        var bvh = new Bvh(triangles);
+        var bvh = new Bvh(triangles, 4, BvhBuilder.Parallelism.Default, width);
         for (int f = 0; f < soup.TriangleCount; f++)
         {
             Point3D a = soup.Vertices[soup.Indices[3 * f]], b = soup.Vertices[soup.Indices[3 * f + 1]];
@@ -88,16 +104,17 @@ public class Bvh_MeshAgreesWithBruteForce
         }
     }
 
-    [Fact]
-    public void Empty_and_single_triangle_meshes()
+    [Theory]
+    [MemberData(nameof(Widths))]
+    public void Empty_and_single_triangle_meshes(int width)
     {
         var ray = new Ray(new Point3D(0.2, 0.2, 5), new Vector3D(0, 0, -1));
-        var empty = new Bvh(new Mesh([], []).CreateTriangles(smooth: false));
+        var empty = new Bvh(new Mesh([], []).CreateTriangles(smooth: false), 4, BvhBuilder.Parallelism.Default, width);
         Assert.False(empty.IntersectNearest(ray, double.PositiveInfinity, out _, out _));
         Assert.False(empty.IntersectAny(ray, double.PositiveInfinity));
 
         var one = new Mesh([new Point3D(0, 0, 0), new Point3D(1, 0, 0), new Point3D(0, 1, 0)], [0, 1, 2]).CreateTriangles(smooth: false);
-        var bvh = new Bvh(one);
+        var bvh = new Bvh(one, 4, BvhBuilder.Parallelism.Default, width);
         Assert.True(bvh.IntersectNearest(ray, double.PositiveInfinity, out double t, out int primitive));
         Assert.Equal(5, t);
         Assert.Same(one[0], bvh.GetPrimitive(primitive));

@@ -17,7 +17,22 @@ public class Bvh_ParallelBuildMatchesSerial
 {
     private static readonly BvhBuilder.Parallelism Everywhere = new(Subtrees: 2, Binning: 8, Chunk: 16);
 
-    public static TheoryData<int> LeafSizes => [1, 4, 8];
+    public static TheoryData<int, int> LeafSizes
+    {
+        get
+        {
+            var data = new TheoryData<int, int>();
+            foreach (int width in BvhWidths.Available)
+            {
+                foreach (int leafSize in (int[])[1, 4, 8])
+                    data.Add(leafSize, width);
+            }
+
+            return data;
+        }
+    }
+
+    public static TheoryData<int> Widths => [.. BvhWidths.Available];
 
     private static Point3D RandomPoint(SeededRandom random, double r) =>
         new(random.NextDouble(-r, r), random.NextDouble(-r, r), random.NextDouble(-r, r));
@@ -59,10 +74,10 @@ public class Bvh_ParallelBuildMatchesSerial
         return new Mesh(vertices, [.. Enumerable.Range(0, vertices.Length)]).CreateTriangles(smooth: false);
     }
 
-    private static void AssertSameTrees(GeometricObject[] triangles, int leafSize, Func<SeededRandom, Ray> rays, int rayCount)
+    private static void AssertSameTrees(GeometricObject[] triangles, int leafSize, int width, Func<SeededRandom, Ray> rays, int rayCount)
     {
-        var serial = new Bvh(triangles, leafSize, BvhBuilder.Parallelism.None);
-        var parallel = new Bvh(triangles, leafSize, Everywhere);
+        var serial = new Bvh(triangles, leafSize, BvhBuilder.Parallelism.None, width);
+        var parallel = new Bvh(triangles, leafSize, Everywhere, width);
         Assert.Equal(serial.BinaryNodeCount, parallel.BinaryNodeCount);
         Assert.Equal(serial.NodeCount, parallel.NodeCount);
 
@@ -87,10 +102,10 @@ public class Bvh_ParallelBuildMatchesSerial
 
     [Theory]
     [MemberData(nameof(LeafSizes))]
-    public void A_random_soup_gives_the_serial_tree_and_brute_force_hits(int leafSize)
+    public void A_random_soup_gives_the_serial_tree_and_brute_force_hits(int leafSize, int width)
     {
         var triangles = Soup(300 + (ulong)leafSize, 1500);
-        AssertSameTrees(triangles, leafSize, random =>
+        AssertSameTrees(triangles, leafSize, width, random =>
         {
             var origin = RandomPoint(random, 15);
             return new Ray(origin, RandomPoint(random, 5) - origin);
@@ -99,22 +114,23 @@ public class Bvh_ParallelBuildMatchesSerial
 
     [Theory]
     [MemberData(nameof(LeafSizes))]
-    public void Triangles_sharing_one_centroid_are_split_in_halves_alike(int leafSize)
+    public void Triangles_sharing_one_centroid_are_split_in_halves_alike(int leafSize, int width)
     {
         var triangles = SameCentroid(300);
-        AssertSameTrees(triangles, leafSize, random =>
+        AssertSameTrees(triangles, leafSize, width, random =>
         {
             var origin = new Point3D(random.NextDouble(-1.5, 1.5), random.NextDouble(-1.5, 1.5), 3);
             return new Ray(origin, new Vector3D(random.NextDouble(-0.1, 0.1), random.NextDouble(-0.1, 0.1), -1));
         }, 300);
     }
 
-    [Fact]
-    public void Duplicated_triangles_give_the_serial_tree()
+    [Theory]
+    [MemberData(nameof(Widths))]
+    public void Duplicated_triangles_give_the_serial_tree(int width)
     {
         var one = Soup(302, 1)[0] as MeshTriangle;
         var mesh = new Mesh([one!.V0, one.V1, one.V2], [.. Enumerable.Repeat(new[] { 0, 1, 2 }, 200).SelectMany(i => i)]);
-        AssertSameTrees(mesh.CreateTriangles(smooth: false), 4, random =>
+        AssertSameTrees(mesh.CreateTriangles(smooth: false), 4, width, random =>
         {
             var target = one.V0 + (0.3 * (one.V1 - one.V0)) + (0.3 * (one.V2 - one.V0));
             var origin = RandomPoint(random, 10);
@@ -122,16 +138,17 @@ public class Bvh_ParallelBuildMatchesSerial
         }, 50);
     }
 
-    [Fact]
-    public void One_triangle_and_none_build_with_every_path_enabled()
+    [Theory]
+    [MemberData(nameof(Widths))]
+    public void One_triangle_and_none_build_with_every_path_enabled(int width)
     {
         var ray = new Ray(new Point3D(0.2, 0.2, 5), new Vector3D(0, 0, -1));
-        var empty = new Bvh(new Mesh([], []).CreateTriangles(smooth: false), 4, Everywhere);
+        var empty = new Bvh(new Mesh([], []).CreateTriangles(smooth: false), 4, Everywhere, width);
         Assert.Equal(0, empty.NodeCount);
         Assert.False(empty.IntersectNearest(ray, double.PositiveInfinity, out _, out _));
 
         var one = new Mesh([new Point3D(0, 0, 0), new Point3D(1, 0, 0), new Point3D(0, 1, 0)], [0, 1, 2]).CreateTriangles(smooth: false);
-        var bvh = new Bvh(one, 1, Everywhere);
+        var bvh = new Bvh(one, 1, Everywhere, width);
         Assert.True(bvh.IntersectNearest(ray, double.PositiveInfinity, out double t, out int primitive));
         Assert.Equal(5, t);
         Assert.Same(one[0], bvh.GetPrimitive(primitive));
