@@ -11,7 +11,8 @@ namespace GMac.Benchmarks.Reporting;
 /// <c>kernels NAME…</c>: the report's scalar figures for a few kernels only (operations of the
 /// generated and hand code, the paired generated / hand time ratio, the accuracy families), in
 /// seconds rather than the full report's minutes, for checking a change of the generator.
-/// <c>--hand-first</c> runs (and compiles) the hand code first; <c>--ratio</c> prints only the paired ratios, one machine-readable
+/// <c>--hand-first</c> runs (and compiles) the hand code first; <c>--code-shift N</c> compiles N other methods before
+/// (<see cref="CodePlacement"/>); <c>--ratio</c> prints only the paired ratios, one machine-readable
 /// line per kernel (<see cref="RatioLine"/>): the report runs it in fresh processes.
 /// </summary>
 public static class KernelsCommand
@@ -32,12 +33,20 @@ public static class KernelsCommand
     {
         var ratioOnly = args.Contains("--ratio");
         var handFirst = args.Contains("--hand-first");
-        args = args.Where(a => a is not ("--ratio" or "--hand-first")).ToArray();
-        if (args.Count == 0 || args.Any(a => !KernelCatalog.Names.Contains(a)))
+        var shift = args.ToList().IndexOf("--code-shift");
+        var shiftMethods = 0;
+        if (shift >= 0 && (shift + 1 >= args.Count || !int.TryParse(args[shift + 1], out shiftMethods) || shiftMethods < 0))
         {
-            error.WriteLine($"usage: GMac.Benchmarks kernels [--ratio] [--hand-first] NAME... (known: {string.Join(", ", KernelCatalog.Names)})");
+            error.WriteLine("kernels: --code-shift takes a count of methods, 0 or more");
             return 2;
         }
+        args = args.Where((a, i) => a is not ("--ratio" or "--hand-first") && (shift < 0 || i != shift && i != shift + 1)).ToArray();
+        if (args.Count == 0 || args.Any(a => !KernelCatalog.Names.Contains(a)))
+        {
+            error.WriteLine($"usage: GMac.Benchmarks kernels [--ratio] [--hand-first] [--code-shift N] NAME... (known: {string.Join(", ", KernelCatalog.Names)})");
+            return 2;
+        }
+        CodePlacement.Shift(shiftMethods);
         if (ratioOnly) return RatiosOnly(args, handFirst, output);
         var dsl = Path.Combine(RepositoryRoot(), "dsl");
         var project = DslProject.Load(dsl);

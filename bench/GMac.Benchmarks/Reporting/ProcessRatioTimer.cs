@@ -8,16 +8,18 @@ namespace GMac.Benchmarks.Reporting;
 /// The generated / hand ratio of a kernel as the median over several fresh processes, each running
 /// <c>kernels --ratio</c> (a median over pairs of slices), every other one compiling the hand code
 /// first (an even count balances the two orders; the median is then the mean of the middle two),
-/// with the JIT's loop alignment off (see <see cref="RunOnce"/>). Within one process the two loops' machine code is fixed, but where the JIT puts it and when
-/// it replaces its first code are not: identical arithmetic was measured at ratios from 0.92 to 1.30
-/// in five processes, steady within each. One process's figure is one draw of that; the median of
-/// several is the kernel's.
+/// each with its code placed elsewhere (<see cref="CodePlacement"/>: process p compiles
+/// <see cref="ShiftStep"/>·p other methods first), with the JIT's loop alignment off (see
+/// <see cref="RunOnce"/>). Within one process the two loops' machine code is fixed, but where the JIT
+/// puts it is not: the third-degree Julia step measured 0.77, 0.96 or 1.25 of its hand code by
+/// placement alone, and without the shifts every process of one compile order drew the same placement.
+/// One process's figure is one draw; the median of several is the kernel's.
 /// </summary>
 public sealed class ProcessRatioTimer(int processes)
 {
     public (double Median, double Min, double Max) GeneratedOverHand(string kernel)
     {
-        var ratios = Enumerable.Range(0, processes).Select(p => RunOnce(kernel, handFirst: p % 2 == 1)).ToList();
+        var ratios = Enumerable.Range(0, processes).Select(p => RunOnce(kernel, handFirst: p % 2 == 1, ShiftStep * p)).ToList();
         return (GenerationTimer.Median(ratios), ratios.Min(), ratios.Max());
     }
 
@@ -27,7 +29,10 @@ public sealed class ProcessRatioTimer(int processes)
         : Path.GetFileNameWithoutExtension(Environment.ProcessPath) == "dotnet" ? Environment.ProcessPath!
         : "dotnet";
 
-    private static double RunOnce(string kernel, bool handFirst)
+    /// <summary>Methods compiled before the kernels per process index (any step that moves the code by more than a line would do).</summary>
+    public const int ShiftStep = 5;
+
+    private static double RunOnce(string kernel, bool handFirst, int codeShift)
     {
         var start = new ProcessStartInfo(DotnetHost())
         {
@@ -42,7 +47,8 @@ public sealed class ProcessRatioTimer(int processes)
         // compiling the generated code first and 1.30 in every one compiling the hand code first, and
         // 0.99-1.01 in both orders without it. Both variants run without it; the time columns keep it.
         start.Environment["DOTNET_JitAlignLoops"] = "0";
-        foreach (var a in (string[])["kernels", "--ratio", .. handFirst ? ["--hand-first"] : Array.Empty<string>(), kernel]) start.ArgumentList.Add(a);
+        foreach (var a in (string[])["kernels", "--ratio", .. handFirst ? ["--hand-first"] : Array.Empty<string>(), "--code-shift", codeShift.ToString(CultureInfo.InvariantCulture), kernel])
+            start.ArgumentList.Add(a);
         using var process = Process.Start(start) ?? throw new InvalidOperationException($"cannot start {start.FileName}");
         var stderr = process.StandardError.ReadToEndAsync();
         var stdout = process.StandardOutput.ReadToEnd();

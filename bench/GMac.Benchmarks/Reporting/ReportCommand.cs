@@ -44,10 +44,10 @@ public static class ReportCommand
 
     /// <summary>
     /// Fresh processes per kernel for its generated / hand ratio (<see cref="ProcessRatioTimer"/>): an even
-    /// number, half of them compiling the hand code first, since on the kernels of about a nanosecond
-    /// the variant compiled first was measured the slower one more often than not.
+    /// number, half of them compiling the hand code first, each with its code placed elsewhere, since
+    /// on the kernels of about a nanosecond where the JIT put the two loops moved their ratio by up to 30 %.
     /// </summary>
-    private const int RatioProcesses = 6;
+    private const int RatioProcesses = 8;
 
     private const int VectorOnlyPairs = 11;
     private const int VectorOnlySliceMs = 10;
@@ -150,7 +150,7 @@ public static class ReportCommand
 
         var command = "dotnet run -c Release --project bench/GMac.Benchmarks -- report" + (options.Quick ? " --quick" : "");
         var mode = options.Quick ? "quick: Stopwatch, best of 3 rounds of 20 ms" : "full: BenchmarkDotNet in process, 4 warm-ups, 10 iterations of 200 ms, median; " +
-            $"generated / hand: in each of {RatioProcesses} fresh processes per kernel (every other one compiling the hand code first; DOTNET_JitAlignLoops=0, since the JIT's padding before a loop moved the ratio of identical loops to 0.77 or 1.30 by compile order), both run until the JIT has its final code, " +
+            $"generated / hand: in each of {RatioProcesses} fresh processes per kernel (every other one compiling the hand code first, and process p compiling {ProcessRatioTimer.ShiftStep}·p methods of GMac.Core before, so that each places the code elsewhere; DOTNET_JitAlignLoops=0), both run until the JIT has its final code, " +
             $"then {KernelsCommand.RatioPairs} back-to-back pairs of {KernelsCommand.SliceMs} ms slices and the median of the pairs' ratios; the median over the processes, their range in brackets";
         var markdown = MarkdownReport.Render(rows, generation, mode, command, ChartFile,
             accuracy, AccuracyTable.Section(accuracy, accuracyItems, GaApplicationBenchmarks.Seed), vectorSection);

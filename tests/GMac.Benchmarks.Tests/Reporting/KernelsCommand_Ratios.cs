@@ -11,7 +11,7 @@ public class KernelsCommand_Ratios
         foreach (var handFirst in new[] { false, true })
         {
             var output = new StringWriter();
-            string[] args = handFirst ? ["--ratio", "--hand-first", "Circ3"] : ["--ratio", "Circ3"];
+            string[] args = handFirst ? ["--ratio", "--hand-first", "--code-shift", "3", "Circ3"] : ["--ratio", "Circ3"];
             Assert.Equal(0, KernelsCommand.Run(args, output, new StringWriter()));
             var fields = Assert.Single(output.ToString().Split('\n', StringSplitOptions.RemoveEmptyEntries)).Split(' ');
             Assert.Equal([KernelsCommand.RatioLine, "Circ3"], fields[..2]);
@@ -26,8 +26,14 @@ public class KernelsCommand_Ratios
     {
         var error = new StringWriter();
         Assert.Equal(2, KernelsCommand.Run(["--ratio", "NoSuchKernel"], new StringWriter(), error));
-        Assert.Contains("usage: GMac.Benchmarks kernels [--ratio] [--hand-first] NAME...", error.ToString());
+        Assert.Contains("usage: GMac.Benchmarks kernels [--ratio] [--hand-first] [--code-shift N] NAME...", error.ToString());
         Assert.Equal(2, KernelsCommand.Run(["--fast", "Circ3"], new StringWriter(), new StringWriter()));
+        foreach (var shift in new[] { new[] { "--code-shift", "Circ3" }, ["--code-shift", "-1", "Circ3"], ["Circ3", "--code-shift"] })
+        {
+            var message = new StringWriter();
+            Assert.Equal(2, KernelsCommand.Run(["--ratio", .. shift], new StringWriter(), message));
+            Assert.Contains("--code-shift takes a count of methods", message.ToString());
+        }
     }
 
     [Fact]
