@@ -58,16 +58,7 @@ public sealed partial class Bvh
                 mask &= mask - 1;
                 int child = Child(ref node, lane);
                 double te = enter.GetElement(lane);
-                int j = sp++;
-                while (j > pushedFrom && stackEnter[j - 1] < te)
-                {
-                    stackEnter[j] = stackEnter[j - 1];
-                    stackRef[j] = stackRef[j - 1];
-                    j--;
-                }
-
-                stackEnter[j] = te;
-                stackRef[j] = child;
+                PushByDistance(stackRef, stackEnter, ref sp, pushedFrom, child, te);
             }
 
             // Pop until an interior node to descend into is found, testing leaves on the way.
@@ -117,16 +108,7 @@ public sealed partial class Bvh
                     continue;
                 }
 
-                for (int i = leaf.First, end = leaf.First + leaf.Count; i < end; i++)
-                {
-                    double ti = table.Distance(i, ray, t);
-                    if (ti < t)
-                    {
-                        t = ti;
-                        primitive = i;
-                        hit = true;
-                    }
-                }
+                hit |= NearestInLeaf(table, in leaf, in ray, ref t, ref primitive);
             }
         }
     }

@@ -196,16 +196,7 @@ public sealed partial class Bvh : AccelerationStructure
                 mask &= mask - 1;
                 int child = lane switch { 0 => node.Child0, 1 => node.Child1, 2 => node.Child2, _ => node.Child3 };
                 double te = enter.GetElement(lane);
-                int j = sp++;
-                while (j > pushedFrom && stackEnter[j - 1] < te)
-                {
-                    stackEnter[j] = stackEnter[j - 1];
-                    stackRef[j] = stackRef[j - 1];
-                    j--;
-                }
-
-                stackEnter[j] = te;
-                stackRef[j] = child;
+                PushByDistance(stackRef, stackEnter, ref sp, pushedFrom, child, te);
             }
 
             // Pop until an interior node to descend into is found, testing leaves on the way.
@@ -255,18 +246,47 @@ public sealed partial class Bvh : AccelerationStructure
                     continue;
                 }
 
-                for (int i = leaf.First, end = leaf.First + leaf.Count; i < end; i++)
-                {
-                    double ti = table.Distance(i, ray, t);
-                    if (ti < t)
-                    {
-                        t = ti;
-                        primitive = i;
-                        hit = true;
-                    }
-                }
+                hit |= NearestInLeaf(table, in leaf, in ray, ref t, ref primitive);
             }
         }
+    }
+
+    /// <summary>
+    /// Pushes a child entered at <paramref name="enter"/> among those pushed since <paramref name="pushedFrom"/>,
+    /// farther ones deeper, so the nearest is popped first (both widths' nearest-hit traversals).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static void PushByDistance(Span<int> stackRef, Span<double> stackEnter, ref int sp, int pushedFrom, int child, double enter)
+    {
+        int j = sp++;
+        while (j > pushedFrom && stackEnter[j - 1] < enter)
+        {
+            stackEnter[j] = stackEnter[j - 1];
+            stackRef[j] = stackRef[j - 1];
+            j--;
+        }
+
+        stackEnter[j] = enter;
+        stackRef[j] = child;
+    }
+
+    /// <summary>The primitives of a leaf without a lane group, tested one by one; true when one is nearer than <paramref name="t"/>.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static bool NearestInLeaf(PrimitiveTable table, in BvhLeaf leaf, in Ray ray, ref double t, ref int primitive)
+    {
+        bool hit = false;
+        for (int i = leaf.First, end = leaf.First + leaf.Count; i < end; i++)
+        {
+            double ti = table.Distance(i, ray, t);
+            if (ti < t)
+            {
+                t = ti;
+                primitive = i;
+                hit = true;
+            }
+        }
+
+        return hit;
     }
 
     [SkipLocalsInit]
