@@ -78,11 +78,12 @@ internal static class OutputPlacement
     public static Dictionary<int, List<string>> CopyPoints(CodeBlock block, IReadOnlyList<CodeStatement> order, IReadOnlyList<string> copied, Func<string, string, bool> mayOverwrite)
     {
         var points = new Dictionary<int, List<string>>();
+        var reads = order.Select(s => InputsRead(block, s)).ToList();
         foreach (var input in copied)
         {
             var at = 0;
             while (at < order.Count
-                   && !InputsRead(block, order[at]).Contains(input)
+                   && !reads[at].Contains(input)
                    && !(order[at] is AssignmentStatement { IsOutput: true } o && mayOverwrite(o.Target, input)))
                 at++;
             if (!points.TryGetValue(at, out var list)) points[at] = list = [];
