@@ -27,6 +27,20 @@ public class ReciprocalDivisionPass_Behaviour
     }
 
     [Fact]
+    public void A_reciprocal_of_a_name_leaves_no_statement_of_its_own()
+    {
+        var before = Block(
+            Temp("u", Sum(Product(A, A), Product(B, B))),
+            Temp("r", Quotient(ConstantExpr.One, U)),
+            Out("o1", Product(R, C)),
+            Out("o2", Product(R, D)));
+        var after = new ReciprocalDivisionPass().Run(before);
+        AssertSameOutputs(before, after);
+        Assert.Equal(["u", "o1", "o2"], after.Statements.Cast<AssignmentStatement>().Select(s => s.Target));
+        Assert.Equal(2, after.Statistics().Divisions);
+    }
+
+    [Fact]
     public void A_product_holding_the_reciprocal_twice_leaves_the_block_as_it_is()
     {
         var block = Block(
