@@ -40,4 +40,23 @@ public class Cancellation_And_HalfAngles
             Assert.Equal(value.Evaluate(v), reduced.Evaluate(v), 12);
         }
     }
+
+    [Fact]
+    public void Terms_with_one_sine_or_cosine_per_half_angle_stay_and_the_others_beside_them_reduce()
+    {
+        var (u, v) = (T / 2, X / 2);
+        // sin u cos v and cos u · y: nothing to reduce, the value comes back as it is
+        var plain = Scalar.Sin(u) * Scalar.Cos(v) + Scalar.Cos(u) * Y;
+        Assert.Same(plain, HalfAngleReduction.Apply(plain));
+        // beside a reducible term, those terms keep their factors (a negative power among them)
+        var mixed = plain + Scalar.Sin(u) * Scalar.Sin(u) * Y / X;
+        var reduced = HalfAngleReduction.Apply(mixed);
+        Assert.Same(plain + (Scalar.One - Scalar.Cos(T)) / 2 * Y / X, reduced);
+        var random = new Random(91);
+        for (var i = 0; i < 10; i++)
+        {
+            var values = new Dictionary<string, double> { ["t"] = random.NextDouble() * 6 - 3, ["x"] = random.NextDouble() + 0.5, ["y"] = random.NextDouble() };
+            Assert.Equal(mixed.Evaluate(values), reduced.Evaluate(values), 12);
+        }
+    }
 }
