@@ -101,6 +101,7 @@ public static class InverseCancellation
     {
         quotient = Scalar.Zero;
         if (Scalar.IsZero(s)) return false;
+        if (!SpansAllow(b, s)) return false;
         var lead = DivisionTerms.Leading(s.Terms, DivisionTerms.CompareDescendingAtoms);
         var remainder = new DividendTerms(b, DivisionTerms.CompareDescendingAtoms);
         var q = new List<Term>();
@@ -116,6 +117,35 @@ public static class InverseCancellation
         if (remainder.Count > 0) return false;
         quotient = Scalar.FromTerms(q);
         return true;
+    }
+
+    /// <summary>
+    /// A necessary condition for b = q·s: in every atom, the spread of b's powers (highest minus lowest)
+    /// is at least s's, since a product's spread in an atom is the sum of its factors' spreads. Most
+    /// divisions that fail fail here, before the division algorithm runs.
+    /// </summary>
+    private static bool SpansAllow(Scalar b, Scalar s)
+    {
+        foreach (var atom in s.FactorAtoms)
+        {
+            var (sLow, sHigh) = Powers(s, atom);
+            if (sHigh == sLow) continue;
+            var (bLow, bHigh) = Powers(b, atom);
+            if (bHigh - bLow < sHigh - sLow) return false;
+        }
+        return true;
+    }
+
+    private static (int Low, int High) Powers(Scalar e, Atom atom)
+    {
+        int low = int.MaxValue, high = int.MinValue;
+        foreach (var t in e.TermArray)
+        {
+            var p = t.Monomial.PowerOf(atom);
+            low = Math.Min(low, p);
+            high = Math.Max(high, p);
+        }
+        return (low, high);
     }
 
     /// <summary>m / d when every power of d is at most m's (as exponents may be negative, compare signed).</summary>

@@ -59,4 +59,18 @@ public class Cancellation_And_HalfAngles
             Assert.Equal(mixed.Evaluate(values), reduced.Evaluate(values), 12);
         }
     }
+
+    [Fact]
+    public void Exact_division_finds_multiples_and_refuses_a_dividend_whose_powers_spread_less_than_the_divisors()
+    {
+        var s = X * X + Y;
+        Assert.True(InverseCancellation.TryDivide((X + T) * s, s, out var q));
+        Assert.Same(X + T, q);
+        // x·y + 1 spreads over x⁰…x¹, the divisor over x⁰…x²: no multiple of it
+        Assert.False(InverseCancellation.TryDivide(X * Y + 1, s, out _));
+        // a divisor with a single power of an atom puts no bound on the dividend's spread in it
+        var t = X * (Y + T);
+        Assert.True(InverseCancellation.TryDivide(t * (Y + 1), t, out var r));
+        Assert.Same(Y + 1, r);
+    }
 }
