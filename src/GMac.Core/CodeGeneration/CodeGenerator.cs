@@ -85,6 +85,7 @@ public static class CodeGenerator
         if (candidates.Count == 0 && tooLarge is not null)
             System.Runtime.ExceptionServices.ExceptionDispatchInfo.Capture(tooLarge.InnerException!).Throw();
         GenerationProfile.Time("difference forms", () => { AddDifferenceForms(candidates, builtBlocks, request.Relations); return 0; });
+        GenerationProfile.Time("origin shift forms", () => { AddOriginShiftForms(candidates); return 0; });
         AddDivisionForms(candidates);
         // The fastest accurate form wins (see FormRanking); equal estimates go to fewer operations,
         // fewer temporaries, then the joined (simplest) form.
@@ -125,6 +126,21 @@ public static class CodeGenerator
         catch (Exception e) when (splitFormsExist && (e as Algebra.AlgebraException ?? e.InnerException as Algebra.AlgebraException) is { ExceedsLimit: true })
         {
             return null;
+        }
+    }
+
+    /// <summary>
+    /// Where the outputs move with the input positions, each form run with one position at the
+    /// origin and its outputs moved back (<see cref="OriginShift"/>): the sphere through four points
+    /// as the sphere through 0 and three differences, moved by the first point.
+    /// </summary>
+    private static void AddOriginShiftForms(List<(CodeBlock Block, JoinMode Form)> candidates)
+    {
+        if (candidates.Count == 0 || OriginShift.Find(candidates[0].Block) is not { } law) return;
+        for (var i = candidates.Count - 1; i >= 0; i--)
+        {
+            var variant = Passes.ConsumerFirstOrder.Apply(Optimizer.Reduce(OriginShift.Apply(candidates[i].Block, law)));
+            if (!candidates.Exists(c => c.Block.HasSameStatements(variant))) candidates.Add((variant, candidates[i].Form));
         }
     }
 
