@@ -15,7 +15,7 @@ public static class BarChart
     public static readonly Color HandColour = new(44, 160, 44);
 
     public const int Width = 1200;
-    public const int Height = 560;
+    public const int Height = 590;
 
     public static byte[] Render(IReadOnlyList<KernelTiming> timings)
     {
@@ -57,7 +57,7 @@ public static class BarChart
             timings.Select(t => t.Kernel).ToArray());
         plot.Axes.Bottom.TickLabelStyle.Rotation = -40;
         plot.Axes.Bottom.TickLabelStyle.Alignment = Alignment.MiddleRight;
-        plot.Axes.Bottom.MinimumSize = 130;
+        plot.Axes.Bottom.MinimumSize = 170; // room for the longest kernel name, rotated
         plot.Axes.SetLimits(-0.6, timings.Count - 0.4, floor, ceiling);
         plot.Grid.XAxisStyle.MajorLineStyle.Width = 0;
 

@@ -159,8 +159,9 @@ internal static class OriginShift
         foreach (var o in outputs)
         {
             var p = PolynomialLifting.LiftThrough(o.Value, Resolve);
-            // a temporary left unresolved (a quotient, a call) stays a variable: not a polynomial of the inputs
-            if (p is null || p.Terms.Count > MaxTerms || p.Variables.Any(definitions.ContainsKey)) return null;
+            // a temporary left unresolved (a quotient, a call), or any other name that is not an input, stays a
+            // variable: then the output is not a polynomial of the inputs
+            if (p is null || p.Terms.Count > MaxTerms || !p.Variables.All(block.InputText.ContainsKey)) return null;
             result.Add(p);
         }
         return result;
