@@ -36,6 +36,18 @@ internal static class OriginShift
     /// <summary>The law by which the block's outputs move with its first layout of positions, or null when they do not.</summary>
     public static Law? Find(CodeBlock block)
     {
+        try
+        {
+            return FindExpanding(block);
+        }
+        catch (Algebra.AlgebraException e) when (e.ExceedsLimit)
+        {
+            return null; // outputs too large to expand in p1 + dᵢ: the forms already built stand
+        }
+    }
+
+    private static Law? FindExpanding(CodeBlock block)
+    {
         if (block.Statements.Any(s => s is not AssignmentStatement)) return null;
         var positions = block.Points.Where(p => p.IsPosition).GroupBy(p => p.Layout).FirstOrDefault(g => g.Count() >= 2)?.ToList();
         if (positions is null) return null;
