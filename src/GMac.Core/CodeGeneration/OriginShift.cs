@@ -117,7 +117,7 @@ internal static class OriginShift
         var reused = new HashSet<int>();
         for (var k = 0; k < law.Laws.Count; k++)
         {
-            if (ReusingMoved(law.Laws, k, anchor) is not var (form, reads) || Cost(form) >= Cost(forms[k])) continue;
+            if (ReusingMoved(law.Laws, k, anchor) is not var (form, reads) || CodeStatistics.CostOf(form) >= CodeStatistics.CostOf(forms[k])) continue;
             forms[k] = form;
             reused.UnionWith(reads);
         }
@@ -154,25 +154,16 @@ internal static class OriginShift
         return (ScalarLowering.Lower(reuse + rest), mu.Keys.Select(j => pairs[j].R).Distinct().ToList());
     }
 
-    /// <summary>The polynomials the outputs hold, looked through the temporaries; null where one is not a polynomial or is too long.</summary>
+    /// <summary>The polynomials the outputs hold, looked through the temporaries; null where one is not a polynomial of the inputs or is too long.</summary>
     private static List<Scalar>? LiftOutputs(CodeBlock block, List<AssignmentStatement> outputs)
     {
-        var definitions = block.Temporaries.GroupBy(t => t.Target, StringComparer.Ordinal)
-            .ToDictionary(g => g.Key, g => g.Last().Value, StringComparer.Ordinal);
-        var lifted = new Dictionary<string, Scalar?>(StringComparer.Ordinal);
-        Scalar? Resolve(string name)
-        {
-            if (!definitions.TryGetValue(name, out var value)) return null;
-            if (lifted.TryGetValue(name, out var known)) return known; // null: not a polynomial, kept as a variable
-            lifted[name] = null;
-            return lifted[name] = PolynomialLifting.LiftThrough(value, Resolve) is { Terms.Count: <= MaxTerms } p ? p : null;
-        }
+        var temporaries = new TemporaryPolynomials(block, MaxTerms);
         var result = new List<Scalar>();
         foreach (var o in outputs)
         {
-            var p = PolynomialLifting.LiftThrough(o.Value, Resolve);
-            // a temporary left unresolved (a quotient, a call), or any other name that is not an input, stays a
-            // variable: then the output is not a polynomial of the inputs
+            // a temporary without a polynomial (a quotient, a call), or any other name that is not
+            // an input, stays a variable: then the output is not a polynomial of the inputs
+            var p = PolynomialLifting.LiftThrough(o.Value, temporaries.Of);
             if (p is null || p.Terms.Count > MaxTerms || !p.Variables.All(block.InputText.ContainsKey)) return null;
             result.Add(p);
         }
@@ -195,7 +186,4 @@ internal static class OriginShift
 
     private static Scalar Top(Scalar s, HashSet<string> anchorNames, int degree) =>
         Scalar.FromTerms(s.Terms.Where(t => AnchorDegree(t.Monomial, anchorNames) == degree));
-
-    private static int Cost(Expr e) =>
-        new CodeBlock([new AssignmentStatement("value", e, true)], new Dictionary<string, string>(), new Dictionary<string, string>()).Statistics().Cost;
 }

@@ -73,11 +73,8 @@ internal static class SymbolicInliner
     /// Operations of a scalar once lowered (factored), remembered per scalar for the process:
     /// lowering depends on nothing else, and every form and binding point asks about the same values.
     /// </summary>
-    private static int Cost(Scalar s) => Costs.GetValue(s, static s =>
-    {
-        var block = new CodeBlock([new AssignmentStatement("x", ScalarLowering.Lower(s), true)], new Dictionary<string, string>(), new Dictionary<string, string>());
-        return new StrongBox<int>(block.Statistics().Cost);
-    }).Value;
+    private static int Cost(Scalar s) =>
+        Costs.GetValue(s, static s => new StrongBox<int>(CodeStatistics.CostOf(ScalarLowering.Lower(s)))).Value;
 
     private static readonly ConditionalWeakTable<Scalar, StrongBox<int>> Costs = new();
 }

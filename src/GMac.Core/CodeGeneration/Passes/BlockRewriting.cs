@@ -1,6 +1,6 @@
 namespace GMac.Core.CodeGeneration.Passes;
 
-/// <summary>Shared helpers of the passes: use counts and substitution of temporaries.</summary>
+/// <summary>Shared helpers of the passes: use counts, dependencies and substitution of temporaries.</summary>
 internal static class BlockRewriting
 {
     /// <summary>How many times each variable is read, over all statements.</summary>
@@ -12,6 +12,34 @@ internal static class BlockRewriting
         foreach (var node in e.DescendantsAndSelf())
             if (node is VariableExpr v) counts[v.Name] = counts.GetValueOrDefault(v.Name) + 1;
         return counts;
+    }
+
+    /// <summary>
+    /// The block's statements with, for each, the indices of the earlier statements it reads: what a
+    /// pass that reorders statements may move. Null where the order itself carries meaning: a
+    /// statement that is not an assignment, a name assigned twice, or a name read before its
+    /// assignment (an input the assignment shadows).
+    /// </summary>
+    public static (AssignmentStatement[] Statements, int[][] Reads)? Dependencies(CodeBlock block)
+    {
+        if (block.Statements.Any(s => s is not AssignmentStatement)) return null;
+        var statements = block.Statements.Cast<AssignmentStatement>().ToArray();
+        var definedAt = new Dictionary<string, int>(StringComparer.Ordinal);
+        for (var i = 0; i < statements.Length; i++)
+            if (!definedAt.TryAdd(statements[i].Target, i)) return null;
+        var reads = new int[statements.Length][];
+        for (var i = 0; i < statements.Length; i++)
+        {
+            var read = new List<int>();
+            foreach (var v in statements[i].Value.DescendantsAndSelf().OfType<VariableExpr>())
+            {
+                if (!definedAt.TryGetValue(v.Name, out var d)) continue;
+                if (d >= i) return null;
+                if (!read.Contains(d)) read.Add(d);
+            }
+            reads[i] = [.. read];
+        }
+        return (statements, reads);
     }
 
     /// <summary>Replaces the chosen temporaries by their values everywhere and removes their statements.</summary>

@@ -165,11 +165,7 @@ public sealed class CommonSubexpressionPass(Func<int, string> temporaryName) : I
         return _costs[e] = ComputeCost(e);
     }
 
-    private static int ComputeCost(Expr e)
-    {
-        var block = new CodeBlock([new AssignmentStatement("x", e, true)], new Dictionary<string, string>(), new Dictionary<string, string>());
-        return block.Statistics().Cost;
-    }
+    private static int ComputeCost(Expr e) => CodeStatistics.CostOf(e);
 
     /// <summary>Names the key before its first use and replaces it (or its negation) in the statements that read it; only those are recounted.</summary>
     private void Extract(List<CountedStatement> statements, KeyCounts counts, Expr key, string name)

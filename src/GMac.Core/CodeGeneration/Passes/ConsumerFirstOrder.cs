@@ -15,18 +15,7 @@ internal static class ConsumerFirstOrder
 {
     public static CodeBlock Apply(CodeBlock block)
     {
-        if (block.Statements.Any(s => s is not AssignmentStatement)) return block;
-        var statements = block.Statements.Cast<AssignmentStatement>().ToArray();
-        var definedAt = new Dictionary<string, int>(StringComparer.Ordinal);
-        for (var i = 0; i < statements.Length; i++)
-            if (!definedAt.TryAdd(statements[i].Target, i)) return block; // not single assignment: the order carries meaning
-        var reads = new int[statements.Length][];
-        for (var i = 0; i < statements.Length; i++)
-        {
-            reads[i] = statements[i].Value.DescendantsAndSelf().OfType<VariableExpr>()
-                .Select(v => definedAt.TryGetValue(v.Name, out var d) ? d : -1).Where(d => d >= 0).Distinct().ToArray();
-            if (reads[i].Any(d => d >= i)) return block; // read before assigned: an input the assignment shadows
-        }
+        if (BlockRewriting.Dependencies(block) is not var (statements, reads)) return block;
 
         var emittedAt = new int[statements.Length];
         Array.Fill(emittedAt, -1);

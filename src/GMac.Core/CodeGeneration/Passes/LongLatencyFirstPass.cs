@@ -18,25 +18,9 @@ public sealed class LongLatencyFirstPass : IOptimizerPass
     public CodeBlock Run(CodeBlock block)
     {
         var statements = block.Statements;
-        if (statements.Count < 3 || statements.Any(s => s is not AssignmentStatement)) return block;
-        var assignments = statements.Cast<AssignmentStatement>().ToArray();
+        if (statements.Count < 3 || BlockRewriting.Dependencies(block) is not var (assignments, reads)) return block;
         var definedAt = new Dictionary<string, int>(StringComparer.Ordinal);
-        for (var i = 0; i < assignments.Length; i++)
-            if (!definedAt.TryAdd(assignments[i].Target, i)) return block; // not single assignment: the order carries meaning
-
-        // The statements each one reads. A name read before its assignment is an input the
-        // assignment would shadow: then too the order carries meaning, and stays.
-        var reads = new List<int>[assignments.Length];
-        for (var i = 0; i < assignments.Length; i++)
-        {
-            reads[i] = [];
-            foreach (var v in assignments[i].Value.DescendantsAndSelf().OfType<VariableExpr>())
-            {
-                if (!definedAt.TryGetValue(v.Name, out var d)) continue;
-                if (d >= i) return block;
-                reads[i].Add(d);
-            }
-        }
+        for (var i = 0; i < assignments.Length; i++) definedAt[assignments[i].Target] = i;
 
         // Long statements and everything they need, found from the last statement back. A
         // quotient x / d of two computed values (not a reciprocal) moves only the statements its

@@ -207,6 +207,5 @@ public sealed class SumOfSquaresPass : IOptimizerPass
         return scale == Rational.One ? sum : ExprFactory.Product(ExprFactory.Constant(scale), sum);
     }
 
-    private static int OperationCost(Expr e) =>
-        new CodeBlock([new AssignmentStatement("x", e, true)], new Dictionary<string, string>(), new Dictionary<string, string>()).Statistics().Cost;
+    private static int OperationCost(Expr e) => CodeStatistics.CostOf(e);
 }

@@ -56,23 +56,20 @@ public sealed class TranslationInvariancePass(bool differencesEverywhere = false
     /// </summary>
     private sealed class HeldPolynomials(CodeBlock block)
     {
-        private readonly Dictionary<string, Expr> _definitions = block.Temporaries
-            .GroupBy(t => t.Target, StringComparer.Ordinal).Where(g => g.Count() == 1)
-            .ToDictionary(g => g.Key, g => g.Single().Value, StringComparer.Ordinal);
-        private readonly Dictionary<string, Scalar?> _lifted = new(StringComparer.Ordinal);
+        private readonly TemporaryPolynomials _held = new(block, MaxHeldTerms, MaxNodes);
 
         private readonly Dictionary<string, int> _uses = BlockRewriting.UseCounts(block.Statements);
 
         private readonly Dictionary<string, bool> _waits = new(StringComparer.Ordinal);
 
-        public bool IsTemporary(string name) => _definitions.ContainsKey(name);
+        public bool IsTemporary(string name) => _held.IsTemporary(name);
 
         /// <summary>Whether the value of <paramref name="e"/> waits, through the temporaries it reads, for one that holds no polynomial (a quotient, a call).</summary>
         public bool WaitsOnOther(Expr e) => e.DescendantsAndSelf().OfType<VariableExpr>().Any(v => WaitsOnOther(v.Name));
 
         private bool WaitsOnOther(string name)
         {
-            if (!_definitions.TryGetValue(name, out var value)) return false;
+            if (!_held.Definitions.TryGetValue(name, out var value)) return false;
             if (_waits.TryGetValue(name, out var known)) return known;
             _waits[name] = false;
             return _waits[name] = Of(name) is null || WaitsOnOther(value);
@@ -83,17 +80,10 @@ public sealed class TranslationInvariancePass(bool differencesEverywhere = false
         /// sum really costs where a product of it was split off (bp_in2 * t1 − pair with pair = bp_in1 * t2).
         /// </summary>
         public Expr WithOwnTemporaries(Expr sum) => BlockRewriting.Substitute(sum, sum.DescendantsAndSelf().OfType<VariableExpr>()
-            .Where(v => _uses.GetValueOrDefault(v.Name) == 1 && _definitions.ContainsKey(v.Name)).DistinctBy(v => v.Name)
-            .ToDictionary(v => v.Name, v => _definitions[v.Name], StringComparer.Ordinal));
+            .Where(v => _uses.GetValueOrDefault(v.Name) == 1 && _held.Definitions.ContainsKey(v.Name)).DistinctBy(v => v.Name)
+            .ToDictionary(v => v.Name, v => _held.Definitions[v.Name], StringComparer.Ordinal));
 
-        public Scalar? Of(string name)
-        {
-            if (!_definitions.TryGetValue(name, out var value)) return null;
-            if (_lifted.TryGetValue(name, out var known)) return known;
-            _lifted[name] = null; // single assignment: no cycle, but guard anyway
-            var lifted = value.Size <= MaxNodes ? PolynomialLifting.LiftThrough(value, Of) : null;
-            return _lifted[name] = lifted is { Terms.Count: <= MaxHeldTerms } ? lifted : null;
-        }
+        public Scalar? Of(string name) => _held.Of(name);
     }
 
     /// <summary>
@@ -215,6 +205,5 @@ public sealed class TranslationInvariancePass(bool differencesEverywhere = false
     private static bool HasDegreeTwo(Scalar polynomial) =>
         polynomial.Terms.Any(t => t.Monomial.Factors.Sum(f => f.Power) >= 2);
 
-    private static int Cost(Expr e) =>
-        new CodeBlock([new AssignmentStatement("value", e, true)], new Dictionary<string, string>(), new Dictionary<string, string>()).Statistics().Cost;
+    private static int Cost(Expr e) => CodeStatistics.CostOf(e);
 }

@@ -108,7 +108,5 @@ internal static class NormComplement
         }
     }
 
-    private static int Cost(Scalar s) =>
-        new CodeBlock([new AssignmentStatement("x", ScalarLowering.Lower(s), true)], new Dictionary<string, string>(), new Dictionary<string, string>())
-            .Statistics().Cost;
+    private static int Cost(Scalar s) => CodeStatistics.CostOf(ScalarLowering.Lower(s));
 }
