@@ -25,8 +25,7 @@ public sealed partial class Bvh
         var max = TOrigin.Moved ? WideRay8.MaxOf(ray) : default;
         ref var nodes = ref _wide8.First;
         var leaves = _leaves;
-        var groups = _groups8;
-        var lanes = new TriangleGroup8Solver.RayLanes(ray);
+        var groups = new Groups8(_groups8, ray);
         var table = Table;
         Span<int> stackRef = stackalloc int[StackSize8];
         Span<double> stackEnter = stackalloc double[StackSize8];
@@ -61,54 +60,11 @@ public sealed partial class Bvh
                 PushByDistance(stackRef, stackEnter, ref sp, pushedFrom, child, te);
             }
 
-            // Pop until an interior node to descend into is found, testing leaves on the way.
-            while (true)
+            // Pop until an interior node to descend into, testing leaves on the way.
+            current = PopToInterior(in groups, leaves, table, in ray, stackRef, stackEnter, ref sp, ref t, ref primitive, ref hit);
+            if (current < 0)
             {
-                if (sp == 0)
-                {
-                    return hit;
-                }
-
-                sp--;
-                if (stackEnter[sp] > t * FarSlack)
-                {
-                    continue;
-                }
-
-                int reference = stackRef[sp];
-                if (reference >= 0)
-                {
-                    current = reference;
-                    break;
-                }
-
-                ref var leaf = ref leaves[~reference];
-                if (leaf.Group >= 0)
-                {
-                    for (int g = 0; g < leaf.GroupCount; g++)
-                    {
-                        var tMax = Vector512.Create(t);
-                        var tv = TriangleGroup8Solver.Distances(lanes, ref groups[leaf.Group + g], tMax);
-                        int found = (int)Vector512.LessThan(tv, tMax).ExtractMostSignificantBits();
-                        while (found != 0)
-                        {
-                            // Lanes in index order with a strict test: ties go to the lower index, as in the scalar loop.
-                            int lane = BitOperations.TrailingZeroCount(found);
-                            found &= found - 1;
-                            double ti = tv.GetElement(lane);
-                            if (ti < t)
-                            {
-                                t = ti;
-                                primitive = leaf.First + 8 * g + lane;
-                                hit = true;
-                            }
-                        }
-                    }
-
-                    continue;
-                }
-
-                hit |= NearestInLeaf(table, in leaf, in ray, ref t, ref primitive);
+                return hit;
             }
         }
     }

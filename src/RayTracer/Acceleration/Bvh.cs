@@ -162,8 +162,7 @@ public sealed partial class Bvh : AccelerationStructure
         var max = TOrigin.Moved ? WideRay.MaxOf(ray) : default;
         var nodes = _wide;
         var leaves = _leaves;
-        var groups = _groups;
-        var lanes = new TriangleGroupSolver.RayLanes(ray);
+        var groups = new Groups4(_groups, ray);
         var table = Table;
         Span<int> stackRef = stackalloc int[StackSize];
         Span<double> stackEnter = stackalloc double[StackSize];
@@ -199,54 +198,11 @@ public sealed partial class Bvh : AccelerationStructure
                 PushByDistance(stackRef, stackEnter, ref sp, pushedFrom, child, te);
             }
 
-            // Pop until an interior node to descend into is found, testing leaves on the way.
-            while (true)
+            // Pop until an interior node to descend into, testing leaves on the way.
+            current = PopToInterior(in groups, leaves, table, in ray, stackRef, stackEnter, ref sp, ref t, ref primitive, ref hit);
+            if (current < 0)
             {
-                if (sp == 0)
-                {
-                    return hit;
-                }
-
-                sp--;
-                if (stackEnter[sp] > t * FarSlack)
-                {
-                    continue;
-                }
-
-                int reference = stackRef[sp];
-                if (reference >= 0)
-                {
-                    current = reference;
-                    break;
-                }
-
-                ref var leaf = ref leaves[~reference];
-                if (leaf.Group >= 0)
-                {
-                    for (int g = 0; g < leaf.GroupCount; g++)
-                    {
-                        var tMax = Vector256.Create(t);
-                        var tv = TriangleGroupSolver.Distances(lanes, ref groups[leaf.Group + g], tMax);
-                        int found = (int)Vector256.LessThan(tv, tMax).ExtractMostSignificantBits();
-                        while (found != 0)
-                        {
-                            // Lanes in index order with a strict test: ties go to the lower index, as in the scalar loop.
-                            int lane = BitOperations.TrailingZeroCount(found);
-                            found &= found - 1;
-                            double ti = tv.GetElement(lane);
-                            if (ti < t)
-                            {
-                                t = ti;
-                                primitive = leaf.First + 4 * g + lane;
-                                hit = true;
-                            }
-                        }
-                    }
-
-                    continue;
-                }
-
-                hit |= NearestInLeaf(table, in leaf, in ray, ref t, ref primitive);
+                return hit;
             }
         }
     }
@@ -268,25 +224,6 @@ public sealed partial class Bvh : AccelerationStructure
 
         stackEnter[j] = enter;
         stackRef[j] = child;
-    }
-
-    /// <summary>The primitives of a leaf without a lane group, tested one by one; true when one is nearer than <paramref name="t"/>.</summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static bool NearestInLeaf(PrimitiveTable table, in BvhLeaf leaf, in Ray ray, ref double t, ref int primitive)
-    {
-        bool hit = false;
-        for (int i = leaf.First, end = leaf.First + leaf.Count; i < end; i++)
-        {
-            double ti = table.Distance(i, ray, t);
-            if (ti < t)
-            {
-                t = ti;
-                primitive = i;
-                hit = true;
-            }
-        }
-
-        return hit;
     }
 
     [SkipLocalsInit]
